@@ -1,0 +1,21 @@
+#pragma once
+// A YAML case file read into the typed configs of each library.
+// Each top-level section has one reader (apps/case_<section>.cpp); a section
+// that is absent is simply not configured, an unknown top-level key is an error.
+#include <optional>
+#include <string>
+
+#include "strict_yaml.hpp"
+
+namespace centrec::cli {
+
+struct CaseFile {
+  std::string path;
+  std::string title;
+  std::string resolved_yaml;  // the fully resolved configuration, echoed into outputs
+};
+
+// Reads and checks every section; throws yaml::ConfigError on the first problem.
+CaseFile read_case_file(const std::string& path);
+
+}  // namespace centrec::cli

@@ -1,0 +1,25 @@
+#pragma once
+// The `centrec` subcommands. Each lives in its own cmd_<name>.cpp and returns
+// the process exit code. Argument vectors exclude the program and subcommand names.
+#include <string>
+#include <vector>
+
+namespace centrec::cli {
+
+using Args = std::vector<std::string>;
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(const Args& args);
+};
+
+int cmd_validate(const Args& args);
+
+// The table `main` dispatches on; add new subcommands here.
+const std::vector<Command>& commands();
+
+// True if args contain -h or --help.
+bool wants_help(const Args& args);
+
+}  // namespace centrec::cli

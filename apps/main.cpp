@@ -1,0 +1,61 @@
+// centrec: DEM of the CentRec particle film, coupling and thermal film model.
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "commands.hpp"
+#include "strict_yaml.hpp"
+
+namespace centrec::cli {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> table = {
+      {"validate", "check a YAML case and print its fully resolved configuration", cmd_validate},
+  };
+  return table;
+}
+
+bool wants_help(const Args& args) {
+  for (const auto& a : args)
+    if (a == "-h" || a == "--help") return true;
+  return false;
+}
+
+}  // namespace centrec::cli
+
+namespace {
+void print_usage() {
+  std::printf("usage: centrec <command> [options]\n\ncommands:\n");
+  for (const auto& c : centrec::cli::commands()) std::printf("  %-10s %s\n", c.name, c.summary);
+  std::printf("\n'centrec <command> --help' describes each command.\n");
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    print_usage();
+    return 2;
+  }
+  const std::string name = argv[1];
+  if (name == "-h" || name == "--help" || name == "help") {
+    print_usage();
+    return 0;
+  }
+  centrec::cli::Args args(argv + 2, argv + argc);
+  for (const auto& c : centrec::cli::commands()) {
+    if (name == c.name) {
+      try {
+        return c.run(args);
+      } catch (const centrec::yaml::ConfigError& e) {
+        std::fprintf(stderr, "centrec %s: configuration error: %s\n", c.name, e.what());
+        return 2;
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "centrec %s: error: %s\n", c.name, e.what());
+        return 1;
+      }
+    }
+  }
+  std::fprintf(stderr, "centrec: unknown command '%s'\n\n", name.c_str());
+  print_usage();
+  return 2;
+}

@@ -1,0 +1,31 @@
+#pragma once
+// Material and material-pair parameters of the contact law (DESIGN.md section 3).
+#include <cmath>
+
+namespace centrec::dem {
+
+struct Material {
+  double youngs_modulus = 5e6;   // Pa (paper Table 1)
+  double poisson_ratio = 0.3;
+  double density = 3560.0;       // kg/m^3
+};
+
+// Interaction parameters given per material pair (particle-particle, particle-wall).
+struct PairInteraction {
+  double restitution = 0.46;
+  double friction = 0.81;         // sliding, Coulomb
+  double rolling_friction = 0.26; // EPSD2 mu_r
+};
+
+// Precomputed once per material pair: effective moduli and the damping factor.
+struct PairConstants {
+  double E_eff = 0.0;   // E*: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2
+  double G_eff = 0.0;   // G*: 1/G* = 2(2-nu1)(1+nu1)/E1 + 2(2-nu2)(1+nu2)/E2
+  double beta = 0.0;    // ln(e)/sqrt(ln^2(e)+pi^2), < 0 (0 for e = 1)
+  double mu = 0.0;
+  double mu_r = 0.0;
+};
+
+PairConstants make_pair_constants(const Material& a, const Material& b, const PairInteraction& p);
+
+}  // namespace centrec::dem

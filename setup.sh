@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# One set-up for both README commands: install the Debian packages centrec needs
+# (only those missing), then configure and build in Release into ./build.
+# Usage: ./setup.sh [extra cmake args...]   e.g. ./setup.sh -DCENTREC_SANITIZE=ON
+# Environment: BUILD_DIR (default build), JOBS (default: all cores).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+PACKAGES=(
+  build-essential cmake pkg-config git
+  libeigen3-dev libsundials-dev libhdf5-dev libyaml-cpp-dev
+  libgtest-dev libgmock-dev libomp-dev
+  python3 python3-matplotlib python3-h5py python3-numpy python3-yaml
+  liggghts openmpi-bin
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+BUILD_DIR="${BUILD_DIR:-build}"
+JOBS="${JOBS:-$(nproc)}"
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build "$BUILD_DIR" -j "$JOBS"

@@ -1,0 +1,75 @@
+// The strict YAML reader: unknown keys, wrong types and out-of-range values are
+// errors naming the key path, the line, the value and the allowed range.
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "strict_yaml.hpp"
+
+using centrec::yaml::ConfigError;
+using centrec::yaml::MapReader;
+using centrec::yaml::Range;
+
+namespace {
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(StrictYaml, ReadsValuesAndRecordsDefaults) {
+  auto r = MapReader::from_string("drum:\n  diameter: 0.12\n  speed_rpm: 160.08\n", "case.yaml");
+  auto drum = r.child("drum");
+  EXPECT_DOUBLE_EQ(drum.number("diameter", 1.0, Range::positive(), "m"), 0.12);
+  EXPECT_DOUBLE_EQ(drum.number("speed_rpm", 0.0, Range::non_negative()), 160.08);
+  EXPECT_DOUBLE_EQ(drum.number("tilt_deg", 45.0, Range::closed(0, 90)), 45.0);
+  drum.finish();
+  r.finish();
+  const std::string text = r.resolved_text();
+  EXPECT_NE(text.find("tilt_deg: 45"), std::string::npos) << text;
+  EXPECT_NE(text.find("diameter: 0.12"), std::string::npos) << text;
+}
+
+TEST(StrictYaml, UnknownKeyNamesPathAndLine) {
+  auto r = MapReader::from_string("drum:\n  diameter: 0.12\n  diamter: 0.2\n", "case.yaml");
+  auto drum = r.child("drum");
+  drum.number("diameter", 1.0, Range::positive());
+  const std::string msg = error_of([&] { drum.finish(); });
+  EXPECT_NE(msg.find("case.yaml:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("drum.diamter"), std::string::npos) << msg;
+}
+
+TEST(StrictYaml, OutOfRangeNamesValueAndRange) {
+  auto r = MapReader::from_string("drum:\n  diameter: -0.5\n", "case.yaml");
+  auto drum = r.child("drum");
+  const std::string msg = error_of([&] { drum.number("diameter", 1.0, Range::positive(), "m"); });
+  EXPECT_NE(msg.find("case.yaml:2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("drum.diameter = -0.5"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("(0, inf)"), std::string::npos) << msg;
+}
+
+TEST(StrictYaml, WrongTypeIsAnError) {
+  auto r = MapReader::from_string("steps: many\nflag: maybe\nmode: fast\nv: [1, 2]\n", "c.yaml");
+  EXPECT_NE(error_of([&] { r.integer("steps", 1, 0, 10); }).find("steps = 'many' is not a number"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { r.boolean("flag", false); }).find("must be true or false"), std::string::npos);
+  EXPECT_NE(error_of([&] { r.choice("mode", "slow", {"slow", "exact"}); }).find("not one of {slow, exact}"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { r.vec3("v", {0, 0, 0}); }).find("needs 3"), std::string::npos);
+}
+
+TEST(StrictYaml, IntegerRejectsFraction) {
+  auto r = MapReader::from_string("n: 2.5\n", "c.yaml");
+  EXPECT_NE(error_of([&] { r.integer("n", 1, 0, 10); }).find("must be an integer"), std::string::npos);
+}
+
+TEST(StrictYaml, ReadingAbsentKeyDoesNotInsertIt) {
+  auto r = MapReader::from_string("a: 1\n", "c.yaml");
+  r.number("a", 0, Range::any());
+  r.number("b", 2, Range::any());
+  EXPECT_NO_THROW(r.finish());
+}

@@ -1,0 +1,19 @@
+#include "bauxite.hpp"
+
+#include <cmath>
+
+namespace centrec::thermal {
+
+namespace {
+constexpr double kCpCoeff = 148.2;
+constexpr double kCpExp = 0.3093;
+}  // namespace
+
+double bauxite_cp(double T) { return kCpCoeff * std::pow(T, kCpExp); }
+
+double bauxite_enthalpy_rise(double T0, double T1) {
+  const double p = kCpExp + 1.0;
+  return kCpCoeff / p * (std::pow(T1, p) - std::pow(T0, p));
+}
+
+}  // namespace centrec::thermal
