@@ -1,5 +1,6 @@
 #include "bauxite.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace centrec::thermal {
@@ -14,6 +15,11 @@ double bauxite_cp(double T) { return kCpCoeff * std::pow(T, kCpExp); }
 double bauxite_enthalpy_rise(double T0, double T1) {
   const double p = kCpExp + 1.0;
   return kCpCoeff / p * (std::pow(T1, p) - std::pow(T0, p));
+}
+
+double bauxite_temperature_at_enthalpy(double h) {
+  const double p = kCpExp + 1.0;
+  return std::pow(std::max(h, 0.0) * p / kCpCoeff, 1.0 / p);
 }
 
 }  // namespace centrec::thermal

@@ -1,0 +1,62 @@
+#pragma once
+// Shared set-ups of the thermal regression tests: a CentRec-like operating point and
+// simple films with known solutions. Header-only, test code only.
+#include <chrono>
+
+#include "thermal/analytic_film.hpp"
+#include "thermal/film_field.hpp"
+#include "thermal/film_model.hpp"
+
+namespace centrec::thermal::testcases {
+
+// A CentRec-like operating point: 1 m drum, 1 m long, 6 mm film of 1.2 mm bauxite,
+// u_surface 0.26 m/s (mdot ~ 3.9 kg/s), 1 MW/m2 uniform, open surface, U_w = 1 W/(m2 K).
+inline AnalyticFilm centrec_film() {
+  AnalyticFilm a;
+  a.thickness = 6e-3;
+  a.u_surface = 0.26;
+  a.phi = 0.55;
+  a.d = 1.2e-3;
+  a.D_shear_coeff = 0.05;
+  a.drum_diameter = 1.0;
+  a.length = 1.0;
+  return a;
+}
+
+inline FilmModel centrec_model() {
+  FilmModel m;
+  m.flux.kind = FluxProfile::Kind::uniform;
+  m.flux.q = 1.0e6;
+  m.surface.h_conv = 10.0;
+  m.wall.U_w = 1.0;
+  m.T_in = 873.15;
+  return m;
+}
+
+// Plug flow: u uniform over the whole depth (no resting layer), uniform phi, no dispersion.
+inline FilmField plug_film(double thickness, double u, double phi, double drum_diameter, double length) {
+  FilmField f;
+  f.z = {0.0, length};
+  f.eta = {0.0, thickness};
+  f.t = {thickness, thickness};
+  f.u = {u, u, u, u};
+  f.phi = {phi, phi, phi, phi};
+  f.D = {0.0, 0.0, 0.0, 0.0};
+  f.drum_diameter = drum_diameter;
+  f.length = length;
+  f.particle_diameter = 1.2e-3;
+  return f;
+}
+
+// No losses anywhere: no emission (F = 0), no convection, adiabatic wall.
+inline void remove_losses(FilmModel& m) {
+  m.surface.loss_factor = 0.0;
+  m.surface.h_conv = 0.0;
+  m.wall.adiabatic = true;
+}
+
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace centrec::thermal::testcases

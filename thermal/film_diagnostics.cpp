@@ -1,0 +1,114 @@
+// Receiver totals, output fields and effective conductivity of the film operator
+// (DESIGN.md section 9 outputs). The boundary powers are summed from the boundary faces
+// only, independently of the cell residuals, so the balance residual tests conservation.
+#include <algorithm>
+#include <cmath>
+
+#include "film_operator.hpp"
+
+namespace centrec::thermal {
+
+FilmBalance FilmOperator::balance(double t, const double* y) {
+  const FilmGrid& g = grid_;
+  const int nxi = g.nxi, nz = g.nz;
+  const long n = size();
+  for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
+  const Inputs in = inputs_at(t);
+  FilmBalance b;
+  for (int i = 0; i < nz; ++i) {
+    const int top = i * nxi + nxi - 1, bottom = i * nxi;
+    const SurfaceState st = surface(i, y[top], props_[top].kn, in);
+    const double q = q_column_[i] * in.flux_factor;
+    b.incident += q * g.dz;
+    b.absorbed += model_.material.alpha * q * g.dz;  // at the surface or in the top layers
+    b.emitted += st.emitted * g.dz;
+    b.convected += st.convected * g.dz;
+    b.wall += wall_loss(i, y[bottom], props_[bottom].kn) * g.dz;
+  }
+  double m_out = 0.0, H_out = 0.0, H_in = 0.0;
+  for (int j = 0; j < nxi; ++j) {
+    const double m_o = in.flow_factor * g.m_axial[nz * nxi + j];
+    const double h_face = advection_ == Advection::upwind ? props_[(nz - 1) * nxi + j].h
+                                                          : model_.heat.enthalpy(face_temperature(nz, j, y));
+    m_out += m_o;
+    H_out += m_o * h_face;
+    H_in += in.flow_factor * g.m_axial[j] * model_.heat.enthalpy(model_.T_in);
+    b.inlet_conduction += props_[j].kz * (g.tf[0] / nxi) * (y[j] - model_.T_in) / (0.5 * g.dz);
+  }
+  b.carried = H_out - H_in;
+  for (long p = 0; p < n; ++p) b.storage += cell_residual(static_cast<int>(p), y, props_.data(), in);
+  b.residual = b.absorbed - b.emitted - b.convected - b.wall - b.carried - b.inlet_conduction;
+  // Per unit width -> whole circumference.
+  for (double* x : {&b.incident, &b.absorbed, &b.emitted, &b.convected, &b.wall, &b.carried,
+                    &b.inlet_conduction, &b.storage, &b.residual})
+    *x *= g.perimeter;
+  b.mass_flow = m_out * g.perimeter;
+  b.T_out = model_.heat.temperature(H_out / m_out);
+  b.efficiency = b.incident > 0 ? b.carried / b.incident : 0.0;
+  return b;
+}
+
+FilmFields FilmOperator::fields(double t, const double* y) {
+  const FilmGrid& g = grid_;
+  const long n = size();
+  const Inputs in = inputs_at(t);
+  FilmFields f;
+  f.T.assign(y, y + n);
+  f.k_n.resize(n);
+  f.k_bed.resize(n);
+  f.k_rad.resize(n);
+  f.k_mix.resize(n);
+  for (long p = 0; p < n; ++p) {
+    const int c = static_cast<int>(p);
+    f.k_bed[p] = k_bed(c, y[p]);
+    f.k_rad[p] = model_.conductivity.k_constant > 0 ? 0.0 : model_.bed.evaluate(y[p], g.phi[p]).k_rad;
+    f.k_mix[p] = k_mix(c, y[p]);
+    f.k_n[p] = props(c, y[p]).kn;
+  }
+  for (int i = 0; i < g.nz; ++i) {
+    const int top = i * g.nxi + g.nxi - 1, bottom = i * g.nxi;
+    const SurfaceState st = surface(i, y[top], f.k_n[top], in);
+    f.T_surface.push_back(st.T_s);
+    f.q_absorbed.push_back(model_.material.alpha * q_column_[i] * in.flux_factor);
+    f.q_emitted.push_back(st.emitted);
+    f.q_convected.push_back(st.convected);
+    f.q_wall.push_back(wall_loss(i, y[bottom], f.k_n[bottom]));
+  }
+  return f;
+}
+
+std::vector<KeffSection> FilmOperator::keff_sections(const double* y) const {
+  const FilmGrid& g = grid_;
+  BedConductivityModel no_rad = model_.bed;
+  no_rad.radiation = false;
+  std::vector<KeffSection> out;
+  for (int i = 0; i < g.nz; ++i) {
+    double u_max = 0.0;
+    for (int j = 0; j < g.nxi; ++j) u_max = std::max(u_max, g.u[g.index(i, j)]);
+    double thick = 0.0, r_n = 0.0, r_bed = 0.0, r_bed0 = 0.0;
+    for (int j = 0; j < g.nxi; ++j) {
+      const int p = g.index(i, j);
+      if (!(g.u[p] > 1e-9 * u_max)) continue;  // the resting layer is not part of the moving film
+      const double kb = k_bed(p, y[p]);
+      const double kb0 = model_.conductivity.k_constant > 0 ? kb : no_rad.k_bed(y[p], g.phi[p]);
+      const double kn = model_.conductivity.mixing ? kb + k_mix(p, y[p]) : kb;
+      thick += g.deta[i];
+      r_n += g.deta[i] / kn;
+      r_bed += g.deta[i] / kb;
+      r_bed0 += g.deta[i] / kb0;
+    }
+    KeffSection s;
+    s.z = g.zc[i];
+    s.moving_thickness = thick;
+    if (thick > 0) {
+      s.k_eff = thick / r_n;
+      s.bed_conduction = thick / r_bed0;
+      s.radiation = thick / r_bed - s.bed_conduction;
+      s.mixing = s.k_eff - thick / r_bed;
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace centrec::thermal

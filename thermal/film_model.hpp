@@ -1,0 +1,64 @@
+#pragma once
+// Everything the film energy equation needs besides the film field and the grid
+// (DESIGN.md section 9): material, conductivity model, solar flux and its time history,
+// surface / wall / inlet conditions. Plain structs with the design defaults; the YAML
+// reader at the program's edge fills them.
+#include <functional>
+
+#include "bed_conductivity.hpp"
+#include "flux_profile.hpp"
+#include "heat_capacity.hpp"
+#include "material.hpp"
+#include "time_factor.hpp"
+
+namespace centrec::thermal {
+
+// Surface eta = t, facing the cavity: absorbed alpha q, emitted eps sigma F (T^4 - T_env^4),
+// convected h (T - T_air).
+struct SurfaceConditions {
+  double loss_factor = 1.0;        // F, 1 = open surface, < 1 = the cavity returns radiation
+  double T_env = 300.0;            // radiative environment, K
+  double h_conv = 0.0;             // W/(m2 K)
+  double T_air = 300.0;            // K
+  double absorb_depth_layers = 0;  // 0: absorb at the surface; n > 0: uniformly over n particle diameters
+};
+
+// Wall eta = 0: loss through the insulation U_w (T_wall - T_amb), or adiabatic.
+struct WallConditions {
+  bool adiabatic = false;
+  double U_w = 1.0;      // W/(m2 K)
+  double T_amb = 300.0;  // K
+};
+
+struct ConductivitySettings {
+  double k_constant = 0.0;       // W/(m K); > 0 replaces the ZBS bed model (analytic tests)
+  bool mixing = true;            // add k_mix = phi rho_s c_p D to the wall-normal conductivity
+  enum class Axial { bed, bed_and_mixing, none };
+  Axial axial = Axial::bed;      // k_z: bed only (default), bed + mixing (isotropic D), or none
+};
+
+struct FilmModel {
+  Material material;
+  BedConductivityModel bed;  // shape factor, flattening; k_s, epsilon, d are synced from material
+  HeatCapacity heat;
+  ConductivitySettings conductivity;
+  FluxProfile flux;
+  TimeFactor flux_time;       // q(z, t) = flux(z) * flux_time(t)
+  TimeFactor flow_time;       // u(z, eta, t) = u(z, eta) * flow_time(t) (mass-flow change)
+  SurfaceConditions surface;
+  WallConditions wall;
+  double T_in = 300.0;        // inlet temperature, K
+  // Optional volumetric heat source (W/m3) at (z, eta, t): manufactured-solution tests.
+  std::function<double(double z, double eta, double t)> source;
+};
+
+enum class Advection { upwind, van_leer };
+
+struct FilmGridSpec {
+  int nz = 200;     // axial cells
+  int nxi = 40;     // wall-normal cells (xi = eta / t); forced to 1 when lumped
+  bool lumped = false;  // 1D depth-lumped variant: T(z) only, surface and wall at the film T
+  Advection advection = Advection::upwind;
+};
+
+}  // namespace centrec::thermal

@@ -1,0 +1,111 @@
+#pragma once
+// The film energy equation discretised by finite volumes on the film grid (DESIGN.md
+// section 9), exposed as an OdeSystem (right-hand side and Jacobian; the integrator is
+// separate, DESIGN.md section 11). Unknown: T per cell, index i * nxi + j (z-major, so the
+// Jacobian is banded with half-width nxi, or 2 nxi below the diagonal for the limited
+// advection scheme).
+//
+// Per cell (per unit width):  rho_s phi c_p(T) V dT/dt = sum of face fluxes + sources
+//   axial faces:  enthalpy m h(T_face) (upwind, or van Leer-limited MUSCL), conduction k_z
+//   xi faces:     enthalpy of the continuity flux (upwind), conduction k_n (harmonic mean)
+//   surface:      alpha q - eps sigma F (T_s^4 - T_env^4) - h (T_s - T_air), with T_s from
+//                 the local balance against the half-cell conduction (second order)
+//   wall:         (T_P - T_amb) / (1/U_w + deta/(2 k)), or adiabatic
+//   inlet:        enthalpy m h(T_in) and conduction from T_in at the face; outlet: no
+//                 conduction.
+// Every face flux is one function of its two sides, so the sum over cells telescopes to
+// the boundary powers and the steady energy balance closes to round-off.
+#include <vector>
+
+#include "film_field.hpp"
+#include "film_grid.hpp"
+#include "film_model.hpp"
+#include "ode_system.hpp"
+
+namespace centrec::thermal {
+
+// Receiver totals at one instant (W, whole circumference) and the outlet state.
+struct FilmBalance {
+  double incident = 0.0;     // integral of q over the irradiated film surface
+  double absorbed = 0.0;
+  double emitted = 0.0;
+  double convected = 0.0;
+  double wall = 0.0;
+  double carried = 0.0;      // enthalpy out at z = L minus enthalpy in at z = 0
+  double inlet_conduction = 0.0;  // conducted back out through the inlet face
+  double storage = 0.0;      // d/dt of the film's enthalpy
+  double residual = 0.0;     // absorbed - emitted - convected - wall - carried - inlet_conduction - storage
+  double T_out = 0.0;        // mixing-cup outlet temperature (weight rho_b u c_p), K
+  double mass_flow = 0.0;    // kg/s
+  double efficiency = 0.0;   // carried / incident
+};
+
+// Fields for output, per cell [nz * nxi] unless noted.
+struct FilmFields {
+  std::vector<double> T, k_n, k_bed, k_rad, k_mix;
+  std::vector<double> T_surface, q_absorbed, q_emitted, q_convected, q_wall;  // per column [nz], W/m2
+};
+
+// Effective wall-normal conductivity of the moving film per axial section (DESIGN.md
+// section 9): series value t_m / integral(d eta / k) over the cells with u > 0, and its
+// additive parts: k_eff = bed_without_radiation + radiation + mixing.
+struct KeffSection {
+  double z = 0.0, moving_thickness = 0.0;
+  double k_eff = 0.0, bed_conduction = 0.0, radiation = 0.0, mixing = 0.0;
+};
+
+class FilmOperator : public OdeSystem {
+ public:
+  FilmOperator(const FilmField& film, const FilmModel& model, const FilmGridSpec& spec);
+
+  long size() const override { return static_cast<long>(grid_.nz) * grid_.nxi; }
+  long lower_bandwidth() const override;
+  long upper_bandwidth() const override { return grid_.nxi; }
+  bool rhs(double t, const double* y, double* ydot) override;
+  bool jacobian(double t, const double* y, const double* fy, const BandEntrySink& sink) override;
+  double steady_residual(double t, const double* y) override;
+  double time_scale() const override;
+
+  // When frozen, the flux and flow time factors are taken at t = 0 whatever t is given
+  // (a steady state for the initial operating point).
+  void freeze_inputs(bool frozen) { frozen_ = frozen; }
+
+  FilmBalance balance(double t, const double* y);
+  FilmFields fields(double t, const double* y);
+  std::vector<KeffSection> keff_sections(const double* y) const;
+
+  const FilmGrid& grid() const { return grid_; }
+  const FilmModel& model() const { return model_; }
+  std::vector<double> uniform_state(double T) const { return std::vector<double>(size(), T); }
+
+ private:
+  struct CellProps {
+    double cp = 0, h = 0, kn = 0, kz = 0, capacity = 0;  // capacity = rho_s phi c_p V
+  };
+  struct Inputs {
+    double flux_factor = 1.0, flow_factor = 1.0, t = 0.0;
+  };
+  struct SurfaceState {
+    double T_s = 0, absorbed = 0, emitted = 0, convected = 0;
+  };
+  Inputs inputs_at(double t) const;
+  CellProps props(int p, double T) const;
+  double k_bed(int p, double T) const;  // ZBS (or the constant override) at the cell's phi
+  double k_mix(int p, double T) const;  // phi rho_s c_p D
+  // Temperature advected through axial face f (0..nz) of stripe j.
+  double face_temperature(int f, int j, const double* T) const;
+  SurfaceState surface(int i, double T_p, double kn, const Inputs& in) const;
+  double wall_loss(int i, double T_p, double kn) const;       // W/m2 out of the film
+  double absorbed_share(int i, int j) const;                  // fraction of alpha q absorbed in cell
+  double cell_residual(int p, const double* T, const CellProps* pr, const Inputs& in) const;
+
+  FilmGrid grid_;
+  FilmModel model_;
+  Advection advection_;
+  bool frozen_ = false;
+  std::vector<double> q_column_;      // q(z_i), W/m2
+  std::vector<CellProps> props_;      // scratch: props at the current state
+  std::vector<double> jac_scratch_;
+};
+
+}  // namespace centrec::thermal

@@ -1,0 +1,30 @@
+#pragma once
+// A method-of-lines system dy/dt = f(t, y) with a banded Jacobian: what the time
+// integrator and the steady-state solver see (DESIGN.md section 11, MFEM's
+// TimeDependentOperator pattern). Integrators know nothing of films.
+#include <functional>
+
+namespace centrec::thermal {
+
+// Receives Jacobian entries J(row, col) = d f_row / d y_col inside the band.
+using BandEntrySink = std::function<void(long row, long col, double value)>;
+
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+  virtual long size() const = 0;
+  virtual long lower_bandwidth() const = 0;  // J(r, c) == 0 for r - c > lower
+  virtual long upper_bandwidth() const = 0;  // J(r, c) == 0 for c - r > upper
+  // Returns false if y is outside the model's domain (non-finite or non-positive T): the
+  // integrator then retries with a smaller step.
+  virtual bool rhs(double t, const double* y, double* ydot) = 0;
+  // Writes every nonzero of the Jacobian at (t, y); fy = f(t, y) is given.
+  virtual bool jacobian(double t, const double* y, const double* fy, const BandEntrySink& sink) = 0;
+  // A dimensionless size of f(t, y) used to decide a steady state (1 = of the order of the
+  // system's throughput); the steady solver stops when it falls below its tolerance.
+  virtual double steady_residual(double t, const double* y) = 0;
+  // Time scale of the slowest transport (residence time or conduction time), s.
+  virtual double time_scale() const = 0;
+};
+
+}  // namespace centrec::thermal
