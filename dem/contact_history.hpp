@@ -1,0 +1,18 @@
+#pragma once
+// History of one contact (DESIGN.md section 3): the Mindlin tangential spring and the
+// EPSD2 rolling spring. All zero means "not in contact".
+#include "dem/vec3.hpp"
+
+namespace centrec::dem {
+
+struct ContactHistory {
+  Vec3 shear;  // accumulated tangential displacement, m (Ft = -kt shear)
+  Vec3 roll;   // EPSD2 rolling-spring torque Mr, N m (torque -Mr on i, +Mr on j)
+};
+
+inline bool is_zero(const ContactHistory& h) {
+  return h.shear.x == 0.0 && h.shear.y == 0.0 && h.shear.z == 0.0 && h.roll.x == 0.0 && h.roll.y == 0.0 &&
+         h.roll.z == 0.0;
+}
+
+}  // namespace centrec::dem

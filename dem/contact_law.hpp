@@ -1,0 +1,59 @@
+#pragma once
+// The one contact law used for particle-particle and particle-wall contacts
+// (DESIGN.md sections 3 and 11): Hertz + Mindlin + EPSD2 as a pure inline function.
+// The neighbour loop, threading and history storage live elsewhere (simulation.cpp).
+#include "dem/contact_history.hpp"
+#include "dem/epsd2_rolling.hpp"
+#include "dem/hertz_mindlin.hpp"
+#include "dem/material.hpp"
+#include "dem/vec3.hpp"
+
+namespace centrec::dem {
+
+struct ContactInput {
+  double delta = 0.0;  // overlap, m (> 0 in contact)
+  Vec3 n;              // unit normal from j (or the wall) to i
+  Vec3 v_contact;      // velocity of i's surface relative to j's at the contact point:
+                       // v_i - v_j - (arm_i w_i + arm_j w_j) x n   (wall: v_j = wall velocity there)
+  Vec3 w_rel;          // relative angular velocity seen by the rolling model
+  double r_eff = 0.0;  // R* (wall: R_i)
+  double m_eff = 0.0;  // m* (wall: m_i)
+  double arm_i = 0.0;  // lever arm of i to the contact point: R_i - delta/2 (LIGGGHTS c_r)
+  double arm_j = 0.0;  // same for j (wall: unused)
+};
+
+struct ContactResult {
+  Vec3 force;     // on i (on j: -force)
+  Vec3 torque_i;  // on i about its centre
+  Vec3 torque_j;  // on j about its centre
+  double fn = 0.0;
+  bool sliding = false;
+  ContactHistory history;  // new history, to be stored if the step updates history
+};
+
+// The relative contact velocity as LIGGGHTS surface_model_default.h forms it.
+inline Vec3 contact_velocity(Vec3 v_rel, Vec3 w_i, Vec3 w_j, double arm_i, double arm_j, Vec3 n) {
+  return v_rel - cross(arm_i * w_i + arm_j * w_j, n);
+}
+
+inline ContactResult evaluate_contact(const PairConstants& c, const ContactInput& in, const ContactHistory& old,
+                                      double dt) {
+  const HertzMindlinCoefficients k = hertz_mindlin_coefficients(c, in.delta, in.r_eff, in.m_eff);
+  const double vn = dot(in.v_contact, in.n);
+  const Vec3 vt = in.v_contact - vn * in.n;
+  ContactResult out;
+  out.fn = hertz_normal_force(k, in.delta, vn);
+  const TangentialResult t = mindlin_tangential(k, c.mu, out.fn, in.n, vt, old.shear, dt);
+  out.sliding = t.sliding;
+  out.history.shear = t.shear;
+  out.history.roll = c.mu_r > 0.0 ? epsd2_rolling_torque(k.kt, in.r_eff, c.mu_r, out.fn, in.n, in.w_rel, old.roll, dt)
+                                  : Vec3{};
+  out.force = out.fn * in.n + t.force;
+  // Tangential force acts at the contact point: -arm_i n on i, +arm_j n on j.
+  const Vec3 nxft = cross(in.n, t.force);
+  out.torque_i = -in.arm_i * nxft - out.history.roll;
+  out.torque_j = -in.arm_j * nxft + out.history.roll;
+  return out;
+}
+
+}  // namespace centrec::dem

@@ -1,0 +1,160 @@
+#include "neighbour_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace centrec::dem {
+
+std::size_t NeighbourList::bytes() const {
+  return start.capacity() * sizeof(std::uint32_t) + nbr.capacity() * sizeof(std::int32_t) +
+         hist.capacity() * sizeof(ContactHistory);
+}
+
+NeighbourList carry_contacts(const NeighbourList& old, const std::vector<std::int32_t>& order,
+                             const std::vector<std::int32_t>& new_of_old) {
+  NeighbourList out;
+  out.start.assign(order.size() + 1, 0);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t o = static_cast<std::size_t>(order[k]);
+    if (o < old.rows()) {
+      for (std::uint32_t e = old.start[o]; e < old.start[o + 1]; ++e) {
+        const std::int32_t j = new_of_old[static_cast<std::size_t>(old.nbr[e])];
+        if (j < 0 || is_zero(old.hist[e])) continue;
+        out.nbr.push_back(j);
+        out.hist.push_back(old.hist[e]);
+      }
+    }
+    out.start[k + 1] = static_cast<std::uint32_t>(out.nbr.size());
+  }
+  return out;
+}
+
+long CellGrid::cell_of(Vec3 x) const {
+  auto clampi = [](long v, int n) { return v < 0 ? 0L : (v >= n ? static_cast<long>(n) - 1 : v); };
+  const long ix = clampi(static_cast<long>((x.x - lo.x) * inv_cx), nx);
+  const long iy = clampi(static_cast<long>((x.y - lo.y) * inv_cy), ny);
+  const long iz = clampi(static_cast<long>((x.z - lo.z) * inv_cz), nz);
+  return ix + nx * (iy + ny * iz);
+}
+
+std::vector<std::int32_t> sort_into_cells(CellGrid& grid, const std::vector<Vec3>& x, double cutoff,
+                                          const PeriodicZ& pz) {
+  const std::size_t n = x.size();
+  Vec3 lo{0, 0, 0}, hi{0, 0, 0};
+  if (n > 0) {
+    lo = hi = x[0];
+    for (const Vec3& p : x) {
+      lo.x = std::min(lo.x, p.x); lo.y = std::min(lo.y, p.y); lo.z = std::min(lo.z, p.z);
+      hi.x = std::max(hi.x, p.x); hi.y = std::max(hi.y, p.y); hi.z = std::max(hi.z, p.z);
+    }
+  }
+  grid.periodic = pz.on;
+  double cell = cutoff;
+  // Cap the cell count near the particle count: a stray particle far away must not
+  // make the grid explode (the search stays correct with larger cells).
+  const double max_cells = 4.0 * static_cast<double>(n) + 64.0;
+  for (;;) {
+    grid.nx = static_cast<int>((hi.x - lo.x) / cell) + 1;
+    grid.ny = static_cast<int>((hi.y - lo.y) / cell) + 1;
+    grid.nz = pz.on ? static_cast<int>(pz.length() / cell) : static_cast<int>((hi.z - lo.z) / cell) + 1;
+    if (static_cast<double>(grid.nx) * grid.ny * std::max(grid.nz, 1) <= max_cells || (pz.on && grid.nz <= 3)) break;
+    cell *= 1.5;
+  }
+  if (pz.on && grid.nz < 3)
+    throw std::invalid_argument("periodic z: period " + std::to_string(pz.length()) +
+                                " m is shorter than 3 neighbour cells of " + std::to_string(cutoff) +
+                                " m (largest diameter + skin); lengthen the period");
+  grid.lo = {lo.x, lo.y, pz.on ? pz.lo : lo.z};
+  grid.inv_cx = 1.0 / cell;
+  grid.inv_cy = 1.0 / cell;
+  grid.inv_cz = pz.on ? grid.nz / pz.length() : 1.0 / cell;
+
+  // Stable counting sort by cell: deterministic, O(N).
+  const long nc = grid.cells();
+  std::vector<long> cell_of(n);
+  grid.cell_start.assign(static_cast<std::size_t>(nc) + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    cell_of[i] = grid.cell_of(x[i]);
+    ++grid.cell_start[static_cast<std::size_t>(cell_of[i]) + 1];
+  }
+  for (long c = 0; c < nc; ++c) grid.cell_start[c + 1] += grid.cell_start[c];
+  std::vector<std::int32_t> fill(grid.cell_start.begin(), grid.cell_start.end() - 1);
+  std::vector<std::int32_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[static_cast<std::size_t>(fill[cell_of[i]]++)] = static_cast<std::int32_t>(i);
+  return order;
+}
+
+namespace {
+
+// Calls f(j) for every particle j in the 27 cells around cell (ix, iy, iz) (each once).
+template <class F>
+inline void for_each_near(const CellGrid& g, long ix, long iy, long iz, F&& f) {
+  const long x0 = std::max(ix - 1, 0L), x1 = std::min(ix + 1, static_cast<long>(g.nx) - 1);
+  for (long dz = -1; dz <= 1; ++dz) {
+    long z = iz + dz;
+    if (g.periodic) {
+      z = (z + g.nz) % g.nz;
+    } else if (z < 0 || z >= g.nz) {
+      continue;
+    }
+    for (long y = std::max(iy - 1, 0L); y <= std::min(iy + 1, static_cast<long>(g.ny) - 1); ++y) {
+      // Cells x0..x1 of one row are contiguous, so are their particles.
+      const long row = g.nx * (y + g.ny * z);
+      const std::int32_t b = g.cell_start[static_cast<std::size_t>(row + x0)];
+      const std::int32_t e = g.cell_start[static_cast<std::size_t>(row + x1 + 1)];
+      for (std::int32_t j = b; j < e; ++j) f(j);
+    }
+  }
+}
+
+}  // namespace
+
+void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vector<Vec3>& x,
+                          const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
+                          const PeriodicZ& pz, const NeighbourList& carried, int threads) {
+  const long n = static_cast<long>(x.size());
+  std::vector<std::uint32_t> count(static_cast<std::size_t>(n) + 1, 0);
+  auto scan = [&](long i, auto&& emit) {
+    if (motion[i] != Motion::free) return;
+    const Vec3 xi = x[i];
+    const double ri = r[i];
+    const long c = g.cell_of(xi);
+    const long ix = c % g.nx, iy = (c / g.nx) % g.ny, iz = c / (static_cast<long>(g.nx) * g.ny);
+    for_each_near(g, ix, iy, iz, [&](std::int32_t j) {
+      if (j == i) return;
+      Vec3 d = xi - x[j];
+      d.z = pz.image(d.z);
+      const double cut = ri + r[j] + skin;
+      if (norm2(d) < cut * cut) emit(j);
+    });
+  };
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (long i = 0; i < n; ++i) {
+    std::uint32_t k = 0;
+    scan(i, [&](std::int32_t) { ++k; });
+    count[i + 1] = k;
+  }
+  for (long i = 0; i < n; ++i) count[i + 1] += count[i];
+  out.start = std::move(count);
+  out.nbr.resize(out.start[n]);
+  out.hist.assign(out.start[n], ContactHistory{});
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (long i = 0; i < n; ++i) {
+    std::uint32_t k = out.start[i];
+    scan(i, [&](std::int32_t j) { out.nbr[k++] = j; });
+    if (static_cast<std::size_t>(i) >= carried.rows()) continue;
+    // Carry histories over, matched by partner (rows are short: a linear search is fastest).
+    for (std::uint32_t e = carried.start[i]; e < carried.start[i + 1]; ++e) {
+      for (std::uint32_t q = out.start[i]; q < out.start[i + 1]; ++q) {
+        if (out.nbr[q] == carried.nbr[e]) {
+          out.hist[q] = carried.hist[e];
+          break;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace centrec::dem

@@ -1,0 +1,57 @@
+#pragma once
+// Cell grid, spatial sort and full Verlet neighbour lists with contact history
+// (DESIGN.md section 3). The list is "full": pair (i, j) appears in row i and in row j,
+// each row carrying its own (bitwise identical) copy of the pair's history, so a thread
+// writes only the rows of its own particles.
+#include <cstdint>
+#include <vector>
+
+#include "dem/contact_history.hpp"
+#include "dem/motion.hpp"
+#include "dem/periodic_z.hpp"
+#include "dem/vec3.hpp"
+
+namespace centrec::dem {
+
+struct NeighbourList {
+  std::vector<std::uint32_t> start;  // rows + 1 offsets into nbr/hist
+  std::vector<std::int32_t> nbr;     // partner index
+  std::vector<ContactHistory> hist;  // history of the pair (zero = not in contact)
+  std::size_t rows() const { return start.empty() ? 0 : start.size() - 1; }
+  std::size_t bytes() const;
+};
+
+// Entries of `old` with non-zero history, moved to the new numbering: new row k is old
+// row order[k]; partners are renumbered by new_of_old (-1 = removed: entry dropped).
+// Rows of particles added after `old` was built (order[k] >= old.rows()) are empty.
+NeighbourList carry_contacts(const NeighbourList& old, const std::vector<std::int32_t>& order,
+                             const std::vector<std::int32_t>& new_of_old);
+
+// Uniform cell grid with cells no smaller than the interaction cut-off.
+struct CellGrid {
+  Vec3 lo;
+  double inv_cx = 0, inv_cy = 0, inv_cz = 0;
+  int nx = 1, ny = 1, nz = 1;
+  bool periodic = false;
+  std::vector<std::int32_t> cell_start;  // ncells + 1, valid after particles are in cell order
+
+  long cell_of(Vec3 x) const;
+  long cells() const { return static_cast<long>(nx) * ny * nz; }
+};
+
+// Sizes the grid to the particles' bounding box (z: the period when periodic) and returns
+// the stable cell order: order[k] = index of the particle that goes to position k. Also
+// fills grid.cell_start for the particles once they are in that order. Throws
+// std::invalid_argument if a period holds fewer than 3 cells.
+std::vector<std::int32_t> sort_into_cells(CellGrid& grid, const std::vector<Vec3>& x, double cutoff,
+                                          const PeriodicZ& pz);
+
+// Full list of particles already in cell order: j is a neighbour of i when
+// |x_i - x_j| < r_i + r_j + skin. Rows of particles that are not Motion::free stay empty
+// (nothing is computed for them; their free partners hold the pair).
+// Histories are taken from `carried` (same numbering), others start at zero.
+void build_neighbour_list(NeighbourList& out, const CellGrid& grid, const std::vector<Vec3>& x,
+                          const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
+                          const PeriodicZ& pz, const NeighbourList& carried, int threads);
+
+}  // namespace centrec::dem

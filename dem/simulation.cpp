@@ -1,0 +1,577 @@
+#include "simulation.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "dem/contact_law.hpp"
+#include "dem/neighbour_list.hpp"
+#include "dem/periodic_z.hpp"
+
+namespace centrec::dem {
+
+namespace {
+
+// Particles are processed in fixed blocks so that per-wall force sums and statistics are
+// reduced in an order independent of the thread count (bitwise determinism).
+constexpr long kBlock = 256;
+constexpr int kMaxWalls = 32;  // wall candidates are a 32-bit mask per particle
+
+struct BlockTally {
+  std::vector<Vec3> wall_force;  // one per wall
+  std::size_t pair_contacts = 0, wall_contacts = 0;
+  long blowup_index = -1;  // first offending particle of the block
+  double blowup_overlap = 0.0;
+  std::string blowup_partner;
+};
+
+template <class T>
+void permute(std::vector<T>& a, const std::vector<std::int32_t>& order) {
+  std::vector<T> out(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) out[k] = a[static_cast<std::size_t>(order[k])];
+  a.swap(out);
+}
+
+template <class T>
+std::size_t bytes_of(const std::vector<T>& a) {
+  return a.capacity() * sizeof(T);
+}
+
+// Rotates u about the unit axis k by the angle whose cosine and sine are given (Rodrigues).
+inline Vec3 rotate(Vec3 u, Vec3 k, double c, double s) { return c * u + s * cross(k, u) + ((1.0 - c) * dot(k, u)) * k; }
+
+// Walls a particle may touch before the next rebuild (it moves at most skin/2 meanwhile).
+bool wall_candidate(const Wall& w, Vec3 p, double r, double margin) {
+  if (!(norm2(w.velocity) == 0.0)) return true;  // moving geometry: always check
+  const Vec3 d = p - w.origin;
+  const double s = dot(d, w.axis);
+  switch (w.shape) {
+    case WallShape::plane:
+      return s > -margin && s < r + margin;
+    case WallShape::cylinder:
+      return s >= w.axial_min - margin && s <= w.axial_max + margin && norm(d - s * w.axis) > w.radius - r - margin;
+    case WallShape::disc: {
+      double dist;
+      Vec3 n, c;
+      return !wall_geometry(w, p, dist, n, c) || dist < r + margin;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+struct Simulation::Impl {
+  NeighbourList list;              // valid while !dirty_
+  NeighbourList carried;           // while dirty_: the contacts to carry into the next rebuild
+  CellGrid grid;
+  PeriodicZ pz;
+  double skin = 0.0;
+  std::vector<Vec3> x_build;                // positions at the last rebuild
+  std::vector<ContactHistory> wall_hist;    // N x walls
+  std::vector<std::uint32_t> wall_mask;     // candidate walls per particle
+  std::vector<BlockTally> tallies;
+  std::size_t rebuilds = 0, pair_contacts = 0, wall_contacts = 0;
+};
+
+Simulation::Simulation(const SimulationConfig& config) : cfg_(config), impl_(std::make_unique<Impl>()) {
+  if (cfg_.periodic_z && !(cfg_.z_hi > cfg_.z_lo))
+    throw std::invalid_argument("periodic_z: z_hi must exceed z_lo");
+  if (!(cfg_.skin_fraction > 0.0)) throw std::invalid_argument("skin_fraction must be > 0");
+  if (!(cfg_.dt >= 0.0)) throw std::invalid_argument("dt must be >= 0 (0 = advised default)");
+  if (std::fabs(norm(cfg_.drum.axis) - 1.0) > 1e-9) throw std::invalid_argument("drum.axis must be a unit vector");
+  impl_->pz = {cfg_.periodic_z, cfg_.z_lo, cfg_.z_hi};
+  set_threads(cfg_.threads);
+  add_material(Material{});
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::set_threads(int n) { threads_ = n > 0 ? n : omp_get_max_threads(); }
+
+int Simulation::add_material(const Material& m) {
+  if (!(m.youngs_modulus > 0.0) || !(m.density > 0.0) || !(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
+    throw std::invalid_argument("material: need E > 0, density > 0, -1 < nu < 0.5");
+  const std::size_t old = n_mat_;
+  std::vector<PairInteraction> inter((old + 1) * (old + 1));
+  for (std::size_t a = 0; a < old; ++a)
+    for (std::size_t b = 0; b < old; ++b) inter[a * (old + 1) + b] = interactions_[a * old + b];
+  interactions_.swap(inter);
+  materials_.push_back(m);
+  n_mat_ = old + 1;
+  update_pair_constants();
+  return static_cast<int>(old);
+}
+
+void Simulation::set_interaction(int a, int b, const PairInteraction& p) {
+  if (a < 0 || b < 0 || static_cast<std::size_t>(a) >= n_mat_ || static_cast<std::size_t>(b) >= n_mat_)
+    throw std::invalid_argument("set_interaction: unknown material index");
+  if (!(p.restitution > 0.0 && p.restitution <= 1.0))
+    throw std::invalid_argument("restitution = " + std::to_string(p.restitution) + " must lie in (0, 1]");
+  if (!(p.friction >= 0.0) || !(p.rolling_friction >= 0.0))
+    throw std::invalid_argument("friction and rolling_friction must be >= 0");
+  interactions_[static_cast<std::size_t>(a) * n_mat_ + b] = p;
+  interactions_[static_cast<std::size_t>(b) * n_mat_ + a] = p;
+  update_pair_constants();
+}
+
+void Simulation::update_pair_constants() {
+  pc_.resize(n_mat_ * n_mat_);
+  for (std::size_t a = 0; a < n_mat_; ++a)
+    for (std::size_t b = 0; b < n_mat_; ++b)
+      pc_[a * n_mat_ + b] = make_pair_constants(materials_[a], materials_[b], interactions_[a * n_mat_ + b]);
+}
+
+int Simulation::add_wall(const Wall& w) {
+  check_wall(w);
+  if (static_cast<std::size_t>(w.material) >= n_mat_) throw std::invalid_argument("wall: unknown material index");
+  if (walls_.size() >= static_cast<std::size_t>(kMaxWalls))
+    throw std::invalid_argument("at most " + std::to_string(kMaxWalls) + " walls");
+  // Re-lay the N x walls history array with one more column.
+  const std::size_t nw = walls_.size();
+  std::vector<ContactHistory> h(x_.size() * (nw + 1));
+  for (std::size_t i = 0; i < x_.size(); ++i)
+    for (std::size_t k = 0; k < nw; ++k) h[i * (nw + 1) + k] = impl_->wall_hist[i * nw + k];
+  impl_->wall_hist.swap(h);
+  invalidate_list();  // wall candidate masks must be rebuilt
+  walls_.push_back(w);
+  wall_force_.push_back({});
+  return static_cast<int>(nw);
+}
+
+std::size_t Simulation::wall_count() const { return walls_.size(); }
+const Wall& Simulation::wall(int index) const { return walls_.at(static_cast<std::size_t>(index)); }
+Vec3 Simulation::wall_force(int index) const { return wall_force_.at(static_cast<std::size_t>(index)); }
+
+const ContactHistory& Simulation::wall_history(std::size_t index, int wall) const {
+  return impl_->wall_hist.at(index * walls_.size() + static_cast<std::size_t>(wall));
+}
+
+std::int64_t Simulation::add_particle(const ParticleInit& p) {
+  if (!(p.radius > 0.0)) throw std::invalid_argument("particle radius must be > 0");
+  if (p.material < 0 || static_cast<std::size_t>(p.material) >= n_mat_)
+    throw std::invalid_argument("particle: unknown material index " + std::to_string(p.material));
+  if (!is_finite(p.x) || !is_finite(p.v) || !is_finite(p.w)) throw std::invalid_argument("particle: non-finite state");
+  invalidate_list();
+  const double mass = materials_[static_cast<std::size_t>(p.material)].density * (4.0 / 3.0) * M_PI * p.radius *
+                      p.radius * p.radius;
+  const std::int64_t id = next_id_++;
+  if (insert_log_.empty() || insert_log_.back().first != step_) insert_log_.push_back({step_, id});
+  id_.push_back(id);
+  Vec3 x = p.x;
+  x.z = impl_->pz.wrap(x.z);
+  x_.push_back(x);
+  v_.push_back(p.v);
+  w_.push_back(p.w);
+  f_.push_back(mass * cfg_.gravity);  // gravity for the first half-kick
+  t_.push_back({});
+  r_.push_back(p.radius);
+  m_.push_back(mass);
+  inv_m_.push_back(1.0 / mass);
+  inv_inertia_.push_back(1.0 / (0.4 * mass * p.radius * p.radius));
+  mat_.push_back(p.material);
+  motion_.push_back(p.motion);
+  impl_->wall_hist.resize(x_.size() * walls_.size());
+  dirty_ = true;
+  return id;
+}
+
+void Simulation::invalidate_list() {
+  // Keep the contacts (numbered as the particle arrays are now) for the next rebuild.
+  if (dirty_) return;
+  std::vector<std::int32_t> ident(x_.size());
+  for (std::size_t i = 0; i < ident.size(); ++i) ident[i] = static_cast<std::int32_t>(i);
+  impl_->carried = carry_contacts(impl_->list, ident, ident);
+  dirty_ = true;
+}
+
+void Simulation::permute_particles(const std::vector<std::int32_t>& order) {
+  permute(id_, order);
+  permute(x_, order);
+  permute(v_, order);
+  permute(w_, order);
+  permute(f_, order);
+  permute(t_, order);
+  permute(r_, order);
+  permute(m_, order);
+  permute(inv_m_, order);
+  permute(inv_inertia_, order);
+  permute(mat_, order);
+  permute(motion_, order);
+  const std::size_t nw = walls_.size();
+  std::vector<ContactHistory> h(order.size() * nw);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    for (std::size_t w = 0; w < nw; ++w) h[k * nw + w] = impl_->wall_hist[static_cast<std::size_t>(order[k]) * nw + w];
+  impl_->wall_hist.swap(h);
+}
+
+std::size_t Simulation::remove_particles(const std::vector<std::int64_t>& ids) {
+  if (ids.empty()) return 0;
+  std::vector<std::int64_t> sorted(ids);
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::int32_t> order, new_of_old(x_.size(), -1);
+  for (std::size_t i = 0; i < x_.size(); ++i) {
+    if (std::binary_search(sorted.begin(), sorted.end(), id_[i])) continue;
+    new_of_old[i] = static_cast<std::int32_t>(order.size());
+    order.push_back(static_cast<std::int32_t>(i));
+  }
+  const std::size_t removed = x_.size() - order.size();
+  if (removed == 0) return 0;
+  invalidate_list();
+  impl_->carried = carry_contacts(impl_->carried, order, new_of_old);
+  permute_particles(order);
+  return removed;
+}
+
+void Simulation::set_velocity(std::size_t index, Vec3 v, Vec3 w) {
+  v_.at(index) = v;
+  w_.at(index) = w;
+}
+
+std::ptrdiff_t Simulation::index_of(std::int64_t id) const {
+  for (std::size_t i = 0; i < id_.size(); ++i)
+    if (id_[i] == id) return static_cast<std::ptrdiff_t>(i);
+  return -1;
+}
+
+TimeStepAdvice Simulation::time_step_advice() const {
+  TimeStepAdvice a;
+  a.max_impact_speed = cfg_.max_impact_speed;
+  a.rayleigh_time = std::numeric_limits<double>::infinity();
+  a.hertz_time = std::numeric_limits<double>::infinity();
+  // Smallest radius per particle material in use.
+  std::vector<double> rmin(n_mat_, std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < r_.size(); ++i)
+    rmin[static_cast<std::size_t>(mat_[i])] = std::min(rmin[static_cast<std::size_t>(mat_[i])], r_[i]);
+  std::vector<bool> wall_mat(n_mat_, false);
+  for (const Wall& w : walls_) wall_mat[static_cast<std::size_t>(w.material)] = true;
+  for (std::size_t a_ = 0; a_ < n_mat_; ++a_) {
+    if (!std::isfinite(rmin[a_])) continue;
+    const double r = rmin[a_];
+    const double m = materials_[a_].density * (4.0 / 3.0) * M_PI * r * r * r;
+    a.rayleigh_time = std::min(a.rayleigh_time, rayleigh_time(materials_[a_], r));
+    for (std::size_t b = 0; b < n_mat_; ++b) {
+      const double E = pc_[a_ * n_mat_ + b].E_eff;
+      if (std::isfinite(rmin[b])) {  // particle-particle: the pair of the two smallest
+        const double rb = rmin[b];
+        const double mb = materials_[b].density * (4.0 / 3.0) * M_PI * rb * rb * rb;
+        a.hertz_time = std::min(a.hertz_time, hertz_contact_time(m * mb / (m + mb), r * rb / (r + rb), E,
+                                                                 cfg_.max_impact_speed));
+      }
+      if (wall_mat[b]) a.hertz_time = std::min(a.hertz_time, hertz_contact_time(m, r, E, cfg_.max_impact_speed));
+    }
+  }
+  const double tmin = std::min(a.rayleigh_time, a.hertz_time);
+  a.stable_bound = std::min(TimeStepAdvice::kRayleighBound * a.rayleigh_time, TimeStepAdvice::kHertzBound * a.hertz_time);
+  a.recommended = std::min(cfg_.dt_fraction * tmin, a.stable_bound);
+  return a;
+}
+
+double Simulation::dt() const { return dt_; }
+
+void Simulation::setup() {
+  if (x_.empty() && cfg_.dt == 0.0)
+    throw std::invalid_argument("setup: no particles to advise a time step from; add particles or set dt");
+  if (!x_.empty()) {
+    const TimeStepAdvice a = time_step_advice();
+    if (cfg_.verbose) std::printf("%s\n", a.report().c_str());
+    if (cfg_.dt > a.stable_bound) {
+      std::ostringstream msg;
+      msg << "dt = " << cfg_.dt << " s exceeds the stability bound " << a.stable_bound << " s ("
+          << TimeStepAdvice::kRayleighBound << " x Rayleigh time " << a.rayleigh_time << " s, "
+          << TimeStepAdvice::kHertzBound << " x Hertz contact time " << a.hertz_time << " s at "
+          << a.max_impact_speed << " m/s); use dt <= " << a.stable_bound << " s (recommended " << a.recommended
+          << " s)";
+      throw std::invalid_argument(msg.str());
+    }
+    dt_ = cfg_.dt > 0.0 ? cfg_.dt : a.recommended;
+    if (cfg_.blowup_overlap_fraction > 0.0) {
+      blowup_fraction_ = cfg_.blowup_overlap_fraction;
+    } else {
+      // A few % of the radius, or twice the legitimate Hertz overlap of the fastest impact.
+      double worst = 0.0;
+      for (std::size_t i = 0; i < r_.size(); ++i) {
+        const double E = pc_[static_cast<std::size_t>(mat_[i]) * n_mat_ + static_cast<std::size_t>(mat_[i])].E_eff;
+        worst = std::max(worst, hertz_max_overlap(0.5 * m_[i], 0.5 * r_[i], E, cfg_.max_impact_speed) / r_[i]);
+        for (const Wall& w : walls_) {
+          const double Ew = pc_[static_cast<std::size_t>(mat_[i]) * n_mat_ + static_cast<std::size_t>(w.material)].E_eff;
+          worst = std::max(worst, hertz_max_overlap(m_[i], r_[i], Ew, cfg_.max_impact_speed) / r_[i]);
+        }
+      }
+      blowup_fraction_ = std::max(0.05, 2.0 * worst);
+    }
+  } else {
+    dt_ = cfg_.dt;
+  }
+  rebuild();
+  compute_forces(false);  // as LIGGGHTS set-up: forces without advancing the history
+  ready_ = true;
+}
+
+void Simulation::rebuild() {
+  Impl& im = *impl_;
+  double rmax = 0.0;
+  for (double r : r_) rmax = std::max(rmax, r);
+  im.skin = cfg_.skin_fraction * 2.0 * rmax;
+  const double cutoff = 2.0 * rmax + im.skin;
+
+  std::vector<std::int32_t> order = sort_into_cells(im.grid, x_, cutoff > 0 ? cutoff : 1.0, im.pz);
+  std::vector<std::int32_t> new_of_old(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) new_of_old[static_cast<std::size_t>(order[k])] = static_cast<std::int32_t>(k);
+  const NeighbourList carried = carry_contacts(dirty_ ? im.carried : im.list, order, new_of_old);
+  permute_particles(order);
+  build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.pz, carried, threads_);
+  im.carried = NeighbourList{};
+
+  const std::size_t n = x_.size();
+  im.x_build = x_;
+  im.wall_mask.assign(n, 0u);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (motion_[i] != Motion::free) continue;
+    std::uint32_t mask = 0;
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+      if (wall_candidate(walls_[w], x_[i], r_[i], im.skin)) mask |= 1u << w;
+    im.wall_mask[i] = mask;
+  }
+  ++im.rebuilds;
+  dirty_ = false;
+}
+
+void Simulation::report_blow_up(std::size_t i, double overlap, const std::string& partner) const {
+  std::ostringstream msg;
+  msg.precision(4);
+  msg << "DEM blow-up at step " << step_ << " (t = " << time_ << " s): particle id " << id_[i] << " at (" << x_[i].x
+      << ", " << x_[i].y << ", " << x_[i].z << ") m";
+  if (std::isfinite(overlap)) {
+    msg << " has overlap " << overlap << " m = " << 100.0 * overlap / r_[i] << " % of its radius with " << partner
+        << " (limit " << 100.0 * blowup_fraction_ << " %)";
+  } else {
+    msg << " has a non-finite position, force or torque";
+  }
+  bool recent = false;
+  for (const auto& [s, first] : insert_log_)
+    if (id_[i] >= first && step_ - s <= 20) recent = true;
+  msg << ". Likely cause: ";
+  if (recent) msg << "particles inserted overlapping (this particle was inserted within the last 20 steps); ";
+  msg << "dt = " << dt_ << " s too large for the contact stiffness (advised " << time_step_advice().recommended
+      << " s), Young's modulus too high for this dt, or impacts faster than max_impact_speed = "
+      << cfg_.max_impact_speed << " m/s";
+  throw BlowUpError(msg.str());
+}
+
+double Simulation::integrate_first_half() {
+  const long n = static_cast<long>(x_.size());
+  const double dt = dt_, half = 0.5 * dt_;
+  const DrumMotion& drum = cfg_.drum;
+  const double c = std::cos(drum.omega * dt), s = std::sin(drum.omega * dt);
+  const Vec3 spin = drum.omega * drum.axis;
+  const PeriodicZ pz = impl_->pz;
+  const Vec3* xb = impl_->x_build.data();
+  double max_d2 = 0.0;
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : max_d2)
+  for (long i = 0; i < n; ++i) {
+    if (motion_[i] == Motion::free) {
+      v_[i] += (half * inv_m_[i]) * f_[i];
+      w_[i] += (half * inv_inertia_[i]) * t_[i];
+      x_[i] += dt * v_[i];
+    } else {  // rigidly with the drum: exact rotation of the position
+      const Vec3 rel = rotate(x_[i] - drum.origin, drum.axis, c, s);
+      x_[i] = drum.origin + rel;
+      v_[i] = cross(spin, rel);
+      w_[i] = spin;
+    }
+    x_[i].z = pz.wrap(x_[i].z);
+    Vec3 d = x_[i] - xb[i];
+    d.z = pz.image(d.z);
+    const double d2 = norm2(d);
+    // NaN compares false: force a rebuild so the force pass reports it.
+    max_d2 = std::max(max_d2, d2 == d2 ? d2 : std::numeric_limits<double>::infinity());
+  }
+  return max_d2;
+}
+
+void Simulation::integrate_second_half() {
+  const long n = static_cast<long>(x_.size());
+  const double half = 0.5 * dt_;
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (long i = 0; i < n; ++i) {
+    if (motion_[i] != Motion::free) continue;
+    v_[i] += (half * inv_m_[i]) * f_[i];
+    w_[i] += (half * inv_inertia_[i]) * t_[i];
+  }
+}
+
+void Simulation::compute_forces(bool update_history) {
+  Impl& im = *impl_;
+  const long n = static_cast<long>(x_.size());
+  const long nblocks = (n + kBlock - 1) / kBlock;
+  const std::size_t nw = walls_.size();
+  if (im.tallies.size() < static_cast<std::size_t>(nblocks)) im.tallies.resize(static_cast<std::size_t>(nblocks));
+  const double dt = dt_;
+  const double limit = blowup_fraction_;
+  const bool relative_rolling = cfg_.wall_rolling == WallRolling::relative;
+  const PeriodicZ pz = im.pz;
+  const Vec3 g = cfg_.gravity;
+  const std::uint32_t* start = im.list.start.data();
+  const std::int32_t* nbr = im.list.nbr.data();
+  ContactHistory* hist = im.list.hist.data();
+  ContactHistory* whist = im.wall_hist.data();
+  const Vec3 *X = x_.data(), *V = v_.data(), *Wv = w_.data();
+  const double *R = r_.data(), *M = m_.data();
+  const std::int64_t* ID = id_.data();
+  const int* MAT = mat_.data();
+  const Motion* MOT = motion_.data();
+
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (long b = 0; b < nblocks; ++b) {
+    BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+    tally.wall_force.assign(nw, Vec3{});
+    tally.pair_contacts = tally.wall_contacts = 0;
+    tally.blowup_index = -1;
+    const long i_end = std::min(n, (b + 1) * kBlock);
+    for (long i = b * kBlock; i < i_end; ++i) {
+      if (MOT[i] != Motion::free) {
+        f_[i] = {};
+        t_[i] = {};
+        continue;
+      }
+      const Vec3 xi = X[i];
+      const double ri = R[i];
+      const std::int64_t idi = ID[i];
+      Vec3 F{}, T{};
+      for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
+        const std::int32_t j = nbr[e];
+        Vec3 d = xi - X[j];
+        d.z = pz.image(d.z);
+        const double rsum = ri + R[j];
+        const double dist2 = norm2(d);
+        if (dist2 >= rsum * rsum) {
+          hist[e] = ContactHistory{};
+          continue;
+        }
+        const double dist = std::sqrt(dist2);
+        const double delta = rsum - dist;
+        if (!(delta <= limit * std::min(ri, R[j])) && tally.blowup_index < 0) {
+          tally.blowup_index = i;
+          tally.blowup_overlap = delta;
+          tally.blowup_partner = "particle id " + std::to_string(ID[j]);
+        }
+        // Canonical operand order (lower id first): both rows compute identical bits.
+        const bool i_first = idi < ID[j];
+        const long a = i_first ? i : j, c = i_first ? j : i;
+        ContactInput in;
+        in.delta = delta;
+        in.n = (1.0 / dist) * (i_first ? d : -d);
+        in.arm_i = R[a] - 0.5 * delta;
+        in.arm_j = R[c] - 0.5 * delta;
+        in.v_contact = contact_velocity(V[a] - V[c], Wv[a], Wv[c], in.arm_i, in.arm_j, in.n);
+        in.w_rel = Wv[a] - Wv[c];
+        in.r_eff = R[a] * R[c] / (R[a] + R[c]);
+        in.m_eff = M[a] * M[c] / (M[a] + M[c]);
+        const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
+        if (update_history) hist[e] = res.history;
+        if (i_first) {
+          F += res.force;
+          T += res.torque_i;
+        } else {
+          F -= res.force;
+          T += res.torque_j;
+        }
+        if (i_first || MOT[j] != Motion::free) ++tally.pair_contacts;
+      }
+      std::uint32_t mask = im.wall_mask[i];
+      while (mask != 0u) {
+        const int wi = __builtin_ctz(mask);
+        mask &= mask - 1u;
+        const Wall& wall = walls_[static_cast<std::size_t>(wi)];
+        ContactHistory& h = whist[static_cast<std::size_t>(i) * nw + static_cast<std::size_t>(wi)];
+        double dist;
+        Vec3 nrm, point;
+        if (!wall_geometry(wall, xi, dist, nrm, point) || dist >= ri) {
+          h = ContactHistory{};
+          continue;
+        }
+        const double delta = ri - dist;
+        if (!(delta <= limit * ri) && tally.blowup_index < 0) {
+          tally.blowup_index = i;
+          tally.blowup_overlap = delta;
+          tally.blowup_partner = "wall " + std::to_string(wi);
+        }
+        ContactInput in;
+        in.delta = delta;
+        in.n = nrm;
+        in.arm_i = ri - 0.5 * delta;
+        in.v_contact = contact_velocity(V[i] - wall_velocity_at(wall, point), Wv[i], Vec3{}, in.arm_i, 0.0, nrm);
+        in.w_rel = relative_rolling ? Wv[i] - wall.angular_velocity : Wv[i];
+        in.r_eff = ri;
+        in.m_eff = M[i];
+        const ContactResult res = evaluate_contact(pair(MAT[i], wall.material), in, h, dt);
+        if (update_history) h = res.history;
+        F += res.force;
+        T += res.torque_i;
+        tally.wall_force[static_cast<std::size_t>(wi)] -= res.force;
+        ++tally.wall_contacts;
+      }
+      F += M[i] * g;
+      f_[i] = F;
+      t_[i] = T;
+      if ((!is_finite(F) || !is_finite(T) || !is_finite(xi)) && tally.blowup_index < 0) {
+        tally.blowup_index = i;
+        tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+  }
+  // Fixed-order reduction over blocks.
+  for (auto& f : wall_force_) f = {};
+  im.pair_contacts = im.wall_contacts = 0;
+  for (long b = 0; b < nblocks; ++b) {
+    const BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+    if (tally.blowup_index >= 0)
+      report_blow_up(static_cast<std::size_t>(tally.blowup_index), tally.blowup_overlap, tally.blowup_partner);
+    for (std::size_t w = 0; w < nw; ++w) wall_force_[w] += tally.wall_force[w];
+    im.pair_contacts += tally.pair_contacts;
+    im.wall_contacts += tally.wall_contacts;
+  }
+}
+
+void Simulation::step(std::int64_t nsteps) {
+  if (!ready_) setup();
+  for (std::int64_t s = 0; s < nsteps; ++s) {
+    if (dirty_) rebuild();
+    const double max_d2 = integrate_first_half();
+    for (Wall& w : walls_) w.origin += dt_ * w.velocity;
+    ++step_;
+    time_ += dt_;
+    if (max_d2 > 0.25 * impl_->skin * impl_->skin) rebuild();  // moved more than skin/2
+    compute_forces(true);
+    integrate_second_half();
+  }
+}
+
+NeighbourStats Simulation::neighbour_stats() const {
+  NeighbourStats s;
+  s.pair_contacts = impl_->pair_contacts;
+  s.wall_contacts = impl_->wall_contacts;
+  s.list_entries = impl_->list.nbr.size();
+  s.rebuilds = impl_->rebuilds;
+  s.skin = impl_->skin;
+  s.particles = x_.size();
+  return s;
+}
+
+std::size_t Simulation::memory_bytes() const {
+  const Impl& im = *impl_;
+  std::size_t b = bytes_of(id_) + bytes_of(x_) + bytes_of(v_) + bytes_of(w_) + bytes_of(f_) + bytes_of(t_) +
+                  bytes_of(r_) + bytes_of(m_) + bytes_of(inv_m_) + bytes_of(inv_inertia_) + bytes_of(mat_) +
+                  bytes_of(motion_);
+  b += im.list.bytes() + im.carried.bytes() + bytes_of(im.x_build) + bytes_of(im.wall_hist) + bytes_of(im.wall_mask) +
+       bytes_of(im.grid.cell_start);
+  for (const auto& t : im.tallies) b += sizeof(BlockTally) + bytes_of(t.wall_force);
+  return b;
+}
+
+}  // namespace centrec::dem

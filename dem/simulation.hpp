@@ -1,0 +1,189 @@
+#pragma once
+// The DEM engine's public API (DESIGN.md section 3): spheres, velocity Verlet with
+// rotation (LIGGGHTS nve/sphere), gravity, Hertz-Mindlin-EPSD2 contacts with particles
+// and analytic walls, cell + Verlet neighbour lists with contact-history carry-over,
+// spatial sorting, OpenMP threads, time-step advisor and blow-up detection.
+//
+// Indices vs ids: particle arrays are reordered (spatially sorted) at every neighbour-list
+// rebuild and compacted on removal, so an index is valid only until the next step() or
+// remove_particles(). ids() gives each particle's stable id (returned by add_particle).
+//
+// Determinism: forces use full neighbour lists; every pair is evaluated from both sides
+// with the same canonical operand order (lower id first), so the two evaluations are
+// bitwise identical (Newton's third law holds exactly) and each thread writes only its
+// own particles. Per-wall force totals are summed over fixed blocks of particles in a
+// fixed order. Results are therefore bitwise identical for any thread count.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dem/contact_history.hpp"
+#include "dem/material.hpp"
+#include "dem/motion.hpp"
+#include "dem/timestep_advisor.hpp"
+#include "dem/vec3.hpp"
+#include "dem/walls.hpp"
+
+namespace centrec::dem {
+
+// Rolling model of particle-wall contacts (DESIGN.md section 3).
+enum class WallRolling : std::uint8_t {
+  relative,  // w_rel = w_i - wall angular velocity (physical; default)
+  liggghts,  // w_rel = w_i (LIGGGHTS 3.8 mesh walls pass only a linear wall velocity)
+};
+
+struct SimulationConfig {
+  Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
+  double dt = 0.0;                // s; 0 = TimeStepAdvice::recommended
+  double dt_fraction = 0.1;       // default dt = dt_fraction * min(Rayleigh, Hertz time)
+  double max_impact_speed = 1.0;  // m/s, for the Hertz contact time and blow-up threshold
+  double skin_fraction = 0.2;     // Verlet skin = skin_fraction * largest diameter
+  // Blow-up: overlap above this fraction of the smaller radius stops the run. 0 = auto:
+  // max(0.05, 2 x the Hertz overlap at max_impact_speed / R).
+  double blowup_overlap_fraction = 0.0;
+  bool periodic_z = false;  // periodic along z in [z_lo, z_hi) (minimum image)
+  double z_lo = 0.0, z_hi = 0.0;
+  DrumMotion drum;
+  WallRolling wall_rolling = WallRolling::relative;
+  int threads = 0;       // OpenMP threads; 0 = omp_get_max_threads()
+  bool verbose = false;  // print the time-step advice at set-up
+};
+
+struct ParticleInit {
+  Vec3 x, v, w;  // position m, velocity m/s, angular velocity rad/s
+  double radius = 0.6e-3;
+  int material = 0;
+  Motion motion = Motion::free;
+};
+
+struct NeighbourStats {
+  std::size_t pair_contacts = 0;     // particle pairs in contact after the last force pass
+  std::size_t wall_contacts = 0;     // particle-wall contacts after the last force pass
+  std::size_t list_entries = 0;      // full neighbour-list entries (each pair twice)
+  std::size_t rebuilds = 0;          // neighbour-list rebuilds (each also re-sorts)
+  double skin = 0.0;                 // m
+  std::size_t particles = 0;
+  // Contacts per particle as LIGGGHTS counts them: (2 pair contacts + wall contacts) / N.
+  double contacts_per_particle() const {
+    return particles ? (2.0 * pair_contacts + wall_contacts) / static_cast<double>(particles) : 0.0;
+  }
+};
+
+// Thrown when a run blows up; what() names particle id, step, overlap and likely cause.
+class BlowUpError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Simulation {
+ public:
+  explicit Simulation(const SimulationConfig& config);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Materials and their pair interactions (particle-particle and particle-wall alike).
+  // Material 0 exists from the start with Material{} defaults and PairInteraction{} with itself.
+  int add_material(const Material& m);
+  void set_interaction(int material_a, int material_b, const PairInteraction& p);
+
+  int add_wall(const Wall& w);  // returns the wall index
+  std::size_t wall_count() const;
+  const Wall& wall(int index) const;
+  Vec3 wall_force(int index) const;  // total force particles exert on the wall, last step, N
+
+  // Insert a particle (between steps); returns its stable id. Does not check overlap.
+  std::int64_t add_particle(const ParticleInit& p);
+  // Remove particles by id (between steps); unknown ids are ignored; returns how many went.
+  std::size_t remove_particles(const std::vector<std::int64_t>& ids);
+  // Remove every particle whose position satisfies pred(x); returns the removed ids.
+  template <class Pred>
+  std::vector<std::int64_t> remove_if(Pred pred) {
+    std::vector<std::int64_t> gone;
+    for (std::size_t i = 0; i < x_.size(); ++i)
+      if (pred(x_[i])) gone.push_back(id_[i]);
+    remove_particles(gone);
+    return gone;
+  }
+  // Overwrite the velocity and angular velocity of particle `index`.
+  void set_velocity(std::size_t index, Vec3 v, Vec3 w);
+
+  // Resolves dt (refuses an unstable one with std::invalid_argument naming value and
+  // bound), builds lists and computes the initial forces. step() calls it when needed.
+  void setup();
+  // Advance n steps. Throws BlowUpError on blow-up.
+  void step(std::int64_t n = 1);
+
+  TimeStepAdvice time_step_advice() const;
+  double dt() const;  // resolved after setup()
+  double time() const { return time_; }
+  std::int64_t step_count() const { return step_; }
+  void set_threads(int n);
+  int threads() const { return threads_; }
+  const SimulationConfig& config() const { return cfg_; }
+
+  // Particle state (structure of arrays; see the note on indices above).
+  std::size_t size() const { return x_.size(); }
+  const std::vector<std::int64_t>& ids() const { return id_; }
+  const std::vector<Vec3>& positions() const { return x_; }
+  const std::vector<Vec3>& velocities() const { return v_; }
+  const std::vector<Vec3>& angular_velocities() const { return w_; }
+  const std::vector<Vec3>& forces() const { return f_; }   // incl. gravity, last force pass
+  const std::vector<Vec3>& torques() const { return t_; }
+  const std::vector<double>& radii() const { return r_; }
+  const std::vector<double>& masses() const { return m_; }
+  const std::vector<int>& materials() const { return mat_; }
+  const std::vector<Motion>& motions() const { return motion_; }
+  std::ptrdiff_t index_of(std::int64_t id) const;  // -1 if absent (linear search)
+
+  NeighbourStats neighbour_stats() const;
+  std::size_t memory_bytes() const;  // heap bytes held by particle, list and history arrays
+
+  // Contact history with a wall (tests: history survives rebuilds/sorting).
+  const ContactHistory& wall_history(std::size_t index, int wall) const;
+
+ private:
+  struct Impl;  // neighbour lists, histories, scratch
+  void rebuild();
+  void compute_forces(bool update_history);
+  double integrate_first_half();  // returns the largest squared displacement since the last build
+  void integrate_second_half();
+  void invalidate_list();  // particles or walls changed: carry contacts, rebuild before the next step
+  void permute_particles(const std::vector<std::int32_t>& order);
+  void update_pair_constants();
+  [[noreturn]] void report_blow_up(std::size_t i, double overlap, const std::string& partner) const;
+  PairConstants const& pair(int a, int b) const { return pc_[static_cast<std::size_t>(a) * n_mat_ + b]; }
+
+  SimulationConfig cfg_;
+  int threads_ = 1;
+  double dt_ = 0.0;
+  double time_ = 0.0;
+  std::int64_t step_ = 0;
+  bool ready_ = false;      // set-up done and lists valid
+  bool dirty_ = true;       // particles added/removed since the last rebuild
+  double blowup_fraction_ = 0.05;
+  std::vector<std::pair<std::int64_t, std::int64_t>> insert_log_;  // (step, first id inserted)
+
+  std::vector<Material> materials_;
+  std::vector<PairInteraction> interactions_;  // n_mat x n_mat
+  std::vector<PairConstants> pc_;              // n_mat x n_mat
+  std::size_t n_mat_ = 0;
+
+  std::vector<Wall> walls_;
+  std::vector<Vec3> wall_force_;
+
+  std::int64_t next_id_ = 0;
+  std::vector<std::int64_t> id_;
+  std::vector<Vec3> x_, v_, w_, f_, t_;
+  std::vector<double> r_, m_, inv_m_, inv_inertia_;
+  std::vector<int> mat_;
+  std::vector<Motion> motion_;
+
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace centrec::dem

@@ -1,0 +1,108 @@
+#include "walls.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace centrec::dem {
+
+Wall Wall::plane(Vec3 point, Vec3 normal, int material) {
+  Wall w;
+  w.shape = WallShape::plane;
+  w.origin = point;
+  w.axis = normalized(normal);
+  w.material = material;
+  return w;
+}
+
+namespace {
+
+// A wall of revolution about `axis` through `origin`, spinning at omega about that axis.
+Wall revolving(WallShape shape, Vec3 origin, Vec3 axis, double r, double omega, int material) {
+  Wall w;
+  w.shape = shape;
+  w.origin = origin;
+  w.axis = normalized(axis);
+  w.radius = r;
+  w.angular_velocity = omega * w.axis;
+  w.material = material;
+  return w;
+}
+
+}  // namespace
+
+Wall Wall::cylinder(Vec3 origin, Vec3 axis, double r, double axial_min, double axial_max, double omega,
+                    int material) {
+  Wall w = revolving(WallShape::cylinder, origin, axis, r, omega, material);
+  w.axial_min = axial_min;
+  w.axial_max = axial_max;
+  return w;
+}
+
+Wall Wall::disc(Vec3 centre, Vec3 axis, double outer_r, double inner_r, double omega, int material) {
+  Wall w = revolving(WallShape::disc, centre, axis, outer_r, omega, material);
+  w.inner_radius = inner_r;
+  return w;
+}
+
+bool wall_geometry(const Wall& w, Vec3 p, double& distance, Vec3& n, Vec3& point) {
+  const Vec3 d = p - w.origin;
+  const double s = dot(d, w.axis);
+  switch (w.shape) {
+    case WallShape::plane: {
+      if (s <= 0.0) return false;  // one-sided: behind the plane
+      distance = s;
+      n = w.axis;
+      point = p - s * w.axis;
+      return true;
+    }
+    case WallShape::cylinder: {
+      if (s < w.axial_min || s > w.axial_max) return false;
+      const Vec3 q = d - s * w.axis;
+      const double rho = norm(q);
+      if (rho == 0.0) return false;  // on the axis: no defined normal, and far from the wall
+      const Vec3 u = (1.0 / rho) * q;
+      distance = w.radius - rho;
+      n = -u;
+      point = w.origin + s * w.axis + w.radius * u;
+      return true;
+    }
+    case WallShape::disc: {
+      const Vec3 q = d - s * w.axis;
+      const double rho = norm(q);
+      // Closest point of the annulus: the in-plane radius clamped to [inner, outer]
+      // (covers the flat face and both rims, e.g. the lip edge a film flows over).
+      const double rc = std::clamp(rho, w.inner_radius, w.radius);
+      Vec3 c = w.origin;
+      if (rho > 0.0) {
+        c += (rc / rho) * q;
+      } else if (w.inner_radius > 0.0) {
+        return false;  // on the axis of a ring: equidistant from the whole rim
+      }
+      const Vec3 e = p - c;
+      distance = norm(e);
+      if (distance == 0.0) return false;
+      n = (1.0 / distance) * e;
+      point = c;
+      return true;
+    }
+  }
+  return false;
+}
+
+void check_wall(const Wall& w) {
+  auto fail = [](const std::string& what) { throw std::invalid_argument("wall: " + what); };
+  if (std::fabs(norm(w.axis) - 1.0) > 1e-9) fail("axis must be a unit vector");
+  if (!is_finite(w.origin) || !is_finite(w.velocity) || !is_finite(w.angular_velocity)) fail("non-finite field");
+  if (w.shape != WallShape::plane && !(w.radius > 0.0))
+    fail("radius = " + std::to_string(w.radius) + " must be > 0");
+  if (w.shape == WallShape::disc && !(w.inner_radius >= 0.0 && w.inner_radius < w.radius))
+    fail("inner_radius = " + std::to_string(w.inner_radius) + " must lie in [0, radius)");
+  if (w.shape == WallShape::cylinder && !(w.axial_min < w.axial_max)) fail("axial_min must be < axial_max");
+  // Spinning about anything but the symmetry axis would move the geometry.
+  if (norm(cross(w.angular_velocity, w.axis)) > 1e-12 * (1.0 + norm(w.angular_velocity)))
+    fail("angular_velocity must be parallel to the axis");
+  if (w.material < 0) fail("material index must be >= 0");
+}
+
+}  // namespace centrec::dem

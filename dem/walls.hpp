@@ -1,0 +1,58 @@
+#pragma once
+// Analytic walls (DESIGN.md sections 3-4): infinite plane, cylinder interior with an
+// axial extent, and a flat disc/annulus plate (two-sided, zero thickness: back plate,
+// outlet lip, annular weir of inner radius R - h). Each wall may translate (velocity) and
+// spin about its own symmetry axis through `origin` (angular_velocity); the surface
+// velocity velocity + angular_velocity x (p - origin) enters the contact law.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "dem/vec3.hpp"
+
+namespace centrec::dem {
+
+enum class WallShape : std::uint8_t { plane, cylinder, disc };
+
+struct Wall {
+  WallShape shape = WallShape::plane;
+  int material = 0;      // index returned by Simulation::add_material
+  Vec3 origin;           // plane: a point on it; cylinder: a point on the axis; disc: centre
+  Vec3 axis{0, 0, 1};    // unit; plane: normal pointing to the particle side; else symmetry axis
+  double radius = 0.0;        // cylinder radius; disc outer radius
+  double inner_radius = 0.0;  // disc: hole radius (0 = full disc)
+  double axial_min = -std::numeric_limits<double>::infinity();  // cylinder extent along axis,
+  double axial_max = std::numeric_limits<double>::infinity();   // measured from origin
+  Vec3 velocity;          // translation, m/s (moves origin each step)
+  Vec3 angular_velocity;  // rad/s, must be parallel to axis (rotation keeps the geometry)
+
+  static Wall plane(Vec3 point, Vec3 normal, int material = 0);
+  // Interior of a cylinder of radius r about the axis through origin, extent
+  // [axial_min, axial_max] along the axis, spinning at omega (rad/s, right-handed about axis).
+  static Wall cylinder(Vec3 origin, Vec3 axis, double r, double axial_min, double axial_max, double omega,
+                       int material = 0);
+  // Flat annulus inner_r <= rho <= outer_r in the plane through centre normal to axis,
+  // spinning at omega about axis. inner_r = 0 gives a full disc.
+  static Wall disc(Vec3 centre, Vec3 axis, double outer_r, double inner_r, double omega, int material = 0);
+};
+
+// Contact geometry of a sphere with a wall.
+struct WallContact {
+  double overlap = 0.0;  // > 0 in contact
+  Vec3 n;                // unit normal from the wall to the sphere centre
+  Vec3 point;            // contact point on the wall surface
+};
+
+// Distance from the sphere centre p to the wall surface along the contact normal, and
+// the normal and surface point. Returns false when p is outside the wall's active region
+// (beyond a cylinder's axial extent, behind a plane, exactly on a disc plane's edge).
+bool wall_geometry(const Wall& w, Vec3 p, double& distance, Vec3& n, Vec3& point);
+
+// Surface velocity of the wall at point p.
+inline Vec3 wall_velocity_at(const Wall& w, Vec3 p) { return w.velocity + cross(w.angular_velocity, p - w.origin); }
+
+// Throws std::invalid_argument naming the bad field (non-unit axis, negative radius,
+// angular velocity not along the axis, ...).
+void check_wall(const Wall& w);
+
+}  // namespace centrec::dem
