@@ -1,0 +1,84 @@
+#include "tests/bench/bench_options.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+namespace centrec::bench {
+namespace {
+
+const char* kHelp =
+    "centrec_bench_film: DEM speed of centrec vs LIGGGHTS 3.8 on a settled particle film in the\n"
+    "D12 drum (issue 2 item 5). Both engines start from the same lattice file, settle, then run\n"
+    "timed phases; the median phase gives particle-steps/s.\n\n"
+    "  --sizes N,N,..       target particle counts (default 10000,50000,200000)\n"
+    "  --threads T,T,..     centrec OpenMP threads = LIGGGHTS MPI ranks (default 1,2)\n"
+    "  --steps S            steps per timed phase (default 1000)\n"
+    "  --settle S           untimed settle steps before timing (default 2000)\n"
+    "  --repeats R          timed phases per run; the median is reported (default 3)\n"
+    "  --repeats-per-size R,R,..  one repeat count per size (overrides --repeats)\n"
+    "  --no-liggghts        time centrec only\n"
+    "  --no-centrec         time LIGGGHTS only\n"
+    "  --liggghts-skin F    LIGGGHTS neighbour skin in diameters (default 0.4)\n"
+    "  --centrec-skin F     centrec Verlet skin in diameters (default 0.4)\n"
+    "  --stl-facets K       facets around the LIGGGHTS cylinder mesh (default 720)\n"
+    "  --liggghts EXE       LIGGGHTS executable (default liggghts)\n"
+    "  --mpirun EXE         MPI launcher (default mpirun)\n"
+    "  --out DIR            output folder: results.csv, results.md, inputs, logs (default bench-film)\n";
+
+template <class T>
+std::vector<T> parse_list(const std::string& opt, const std::string& s) {
+  std::vector<T> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    std::istringstream is(item);
+    double v;
+    if (!(is >> v) || v <= 0) throw std::invalid_argument(opt + ": bad value '" + item + "' (positive numbers)");
+    out.push_back(static_cast<T>(v));
+  }
+  if (out.empty()) throw std::invalid_argument(opt + ": empty list");
+  return out;
+}
+
+double parse_positive(const std::string& opt, const std::string& s) {
+  return parse_list<double>(opt, s).at(0);
+}
+
+}  // namespace
+
+BenchOptions parse_bench_options(int argc, char** argv) {
+  BenchOptions o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--help" || a == "-h") {
+      std::fputs(kHelp, stdout);
+      std::exit(0);
+    } else if (a == "--sizes") o.sizes = parse_list<long>(a, value());
+    else if (a == "--threads") o.threads = parse_list<int>(a, value());
+    else if (a == "--steps") o.steps = static_cast<long>(parse_positive(a, value()));
+    else if (a == "--settle") o.settle_steps = static_cast<long>(parse_positive(a, value()));
+    else if (a == "--repeats") o.repeats = static_cast<int>(parse_positive(a, value()));
+    else if (a == "--repeats-per-size") o.repeats_per_size = parse_list<int>(a, value());
+    else if (a == "--no-liggghts") o.liggghts = false;
+    else if (a == "--no-centrec") o.centrec = false;
+    else if (a == "--liggghts-skin") o.liggghts_skin_d = parse_positive(a, value());
+    else if (a == "--centrec-skin") o.centrec_skin_d = parse_positive(a, value());
+    else if (a == "--stl-facets") o.stl_facets = static_cast<int>(parse_positive(a, value()));
+    else if (a == "--liggghts") o.liggghts_exe = value();
+    else if (a == "--mpirun") o.mpirun = value();
+    else if (a == "--out") o.out = value();
+    else throw std::invalid_argument("unknown option " + a + " (see --help)");
+  }
+  if (!o.repeats_per_size.empty() && o.repeats_per_size.size() != o.sizes.size())
+    throw std::invalid_argument("--repeats-per-size needs one value per size");
+  if (!o.liggghts && !o.centrec) throw std::invalid_argument("--no-liggghts and --no-centrec: nothing to run");
+  return o;
+}
+
+}  // namespace centrec::bench

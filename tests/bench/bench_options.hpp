@@ -1,0 +1,28 @@
+#pragma once
+// Command line of centrec_bench_film.
+#include <string>
+#include <vector>
+
+namespace centrec::bench {
+
+struct BenchOptions {
+  std::vector<long> sizes{10000, 50000, 200000};  // target N (rounded to whole lattice rows)
+  std::vector<int> threads{1, 2};                 // centrec threads = LIGGGHTS ranks
+  long steps = 1000;                              // per timed phase
+  long settle_steps = 2000;
+  int repeats = 3;
+  std::vector<int> repeats_per_size;             // optional, overrides repeats per size
+  bool liggghts = true;
+  bool centrec = true;
+  double liggghts_skin_d = 0.4;                   // neighbour skin / d
+  double centrec_skin_d = 0.4;
+  int stl_facets = 720;                           // facets around the cylinder
+  std::string out = "bench-film";
+  std::string liggghts_exe = "liggghts";
+  std::string mpirun = "mpirun";
+};
+
+// Parses argv; prints help and exits(0) on --help; throws std::invalid_argument on errors.
+BenchOptions parse_bench_options(int argc, char** argv);
+
+}  // namespace centrec::bench

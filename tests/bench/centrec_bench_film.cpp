@@ -1,0 +1,128 @@
+// centrec_bench_film: issue 2 item 5. Times centrec and LIGGGHTS 3.8 on the same settled
+// particle film in the D12 drum at several N and thread/rank counts; see --help.
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/bench/bench_options.hpp"
+#include "tests/bench/bench_table.hpp"
+#include "tests/bench/centrec_run.hpp"
+#include "tests/bench/cylinder_stl.hpp"
+#include "tests/bench/film_case.hpp"
+#include "tests/bench/film_initial_state.hpp"
+#include "tests/bench/liggghts_deck.hpp"
+#include "tests/bench/liggghts_run.hpp"
+
+namespace fs = std::filesystem;
+using namespace centrec::bench;
+
+namespace {
+
+void print_result(const EngineResult& r) {
+  if (r.ok)
+    std::printf("  %-8s %d worker(s): median %.3f s per %ld steps -> %.3g particle-steps/s; final KE %.4g J, "
+                "mean |v| %.4f m/s, mean omega_z %.4f rad/s, %ld particles\n",
+                r.engine.c_str(), r.workers, r.median_seconds(), r.steps, r.particle_steps_per_second(),
+                r.final.kinetic_energy, r.final.mean_speed, r.final.mean_omega_z, r.final.atoms);
+  else
+    std::printf("  %-8s %d worker(s): FAILED: %s\n", r.engine.c_str(), r.workers, r.note.c_str());
+  std::fflush(stdout);
+}
+
+std::string preamble(const FilmCase& c, const BenchOptions& o) {
+  char b[1024];
+  const std::time_t now = std::time(nullptr);
+  char when[64];
+  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  std::snprintf(b, sizeof b,
+                "# centrec vs LIGGGHTS 3.8: settled film in the D12 drum\n\n"
+                "%s, %u hardware threads. Case: D = %.3g m, %.2f rpm (omega %.4f rad/s), gravity %.2f m/s^2 at %.0f deg "
+                "to the axis, periodic in z; d = %.3g m, rho = %.0f, E = %.3g Pa, nu = %.2f, e = %.2f, mu = %.2f, "
+                "mu_r = %.2f, wall mu = %.0f, wall mu_r = %.2f; dt = %.3g s; %d lattice layers. Timed phase: %ld steps "
+                "after %ld settle steps, median of the repeats. LIGGGHTS: skin %.2f d, STL %d facets around. centrec: "
+                "skin %.2f d, wall rolling in LIGGGHTS form.\n",
+                when, std::thread::hardware_concurrency(), 2 * c.drum_radius, c.rpm, c.omega(), c.gravity, c.tilt_deg,
+                c.diameter, c.density, c.youngs_modulus, c.poisson_ratio, c.restitution, c.friction,
+                c.rolling_friction, c.wall_friction, c.wall_rolling_friction, c.dt, c.layers, o.steps, o.settle_steps,
+                o.liggghts_skin_d, o.stl_facets, o.centrec_skin_d);
+  return b;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const BenchOptions o = parse_bench_options(argc, argv);
+    const FilmCase c;
+    fs::create_directories(o.out);
+    LiggghtsRunSettings lig;
+    lig.liggghts = o.liggghts_exe;
+    lig.mpirun = o.mpirun;
+    const bool run_lig = o.liggghts && liggghts_available(lig);
+    if (o.liggghts && !run_lig)
+      std::printf("warning: %s or %s not found on PATH: LIGGGHTS skipped\n", o.mpirun.c_str(), o.liggghts_exe.c_str());
+
+    std::vector<BenchRow> rows;
+    for (std::size_t si = 0; si < o.sizes.size(); ++si) {
+      const int repeats = o.repeats_per_size.empty() ? o.repeats : o.repeats_per_size[si];
+      // One lattice file per N; both engines read this file (centrec via read_film_state,
+      // LIGGGHTS via the data file converted from what was read back).
+      const FilmState made = make_film_lattice(c, o.sizes[si]);
+      const std::string dir = o.out + "/N" + std::to_string(made.particles.size());
+      fs::create_directories(dir);
+      const std::string state_file = dir + "/film_initial_state.txt";
+      write_film_state(state_file, made);
+      const FilmState s = read_film_state(state_file);
+      std::printf("N = %zu (target %ld): periodic length %.4g m = %.1f d, state %s\n", s.particles.size(),
+                  o.sizes[si], s.length, s.length / c.diameter, state_file.c_str());
+      if (run_lig) {
+        lig.work_dir = fs::absolute(dir).string();
+        lig.deck.data_file = lig.work_dir + "/data.film";
+        lig.deck.stl_file = lig.work_dir + "/drum.stl";
+        write_liggghts_data(lig.deck.data_file, c, s);
+        // One axial segment: long facets were faster for LIGGGHTS than short ones here.
+        const long tris = write_cylinder_stl(lig.deck.stl_file, c.drum_radius, s.length, o.stl_facets, 1);
+        std::printf("  LIGGGHTS mesh: %ld triangles (%d around x 1 along z)\n", tris, o.stl_facets);
+      }
+      for (int t : o.threads) {
+        BenchRow row;
+        row.particles = static_cast<long>(s.particles.size());
+        row.workers = t;
+        if (run_lig) {
+          lig.deck.ranks = t;
+          lig.deck.skin = o.liggghts_skin_d * c.diameter;
+          lig.deck.settle_steps = o.settle_steps;
+          lig.deck.timed_steps = o.steps;
+          lig.deck.repeats = repeats;
+          row.liggghts = run_liggghts(c, s, lig);
+          print_result(row.liggghts);
+        }
+        if (o.centrec) {
+          CentrecRunSettings cr;
+          cr.threads = t;
+          cr.skin_fraction = o.centrec_skin_d;
+          cr.settle_steps = o.settle_steps;
+          cr.timed_steps = o.steps;
+          cr.repeats = repeats;
+          row.centrec = run_centrec(c, s, cr);
+          print_result(row.centrec);
+        }
+        rows.push_back(row);
+        // Rewrite the tables after every point so an interrupted run keeps what it measured.
+        const std::string md = format_markdown(c, rows, preamble(c, o));
+        write_text(o.out + "/results.md", md);
+        write_csv(o.out + "/results.csv", rows);
+      }
+    }
+    const std::string md = format_markdown(c, rows, preamble(c, o));
+    std::printf("\n%s\nWritten: %s/results.md, %s/results.csv\n", md.c_str(), o.out.c_str(), o.out.c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "centrec_bench_film: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,97 @@
+#include "tests/bench/centrec_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <vector>
+
+#include "dem/simulation.hpp"
+#include "tests/bench/film_summary.hpp"
+#include "tests/bench/process_memory.hpp"
+
+namespace centrec::bench {
+namespace {
+
+using dem::Vec3;
+
+FilmSummary summarize(const FilmCase& c, const dem::Simulation& sim) {
+  const std::size_t n = sim.size();
+  std::vector<double> x(3 * n), v(3 * n), w(3 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 p = sim.positions()[i], u = sim.velocities()[i], o = sim.angular_velocities()[i];
+    x[3 * i] = p.x, x[3 * i + 1] = p.y, x[3 * i + 2] = p.z;
+    v[3 * i] = u.x, v[3 * i + 1] = u.y, v[3 * i + 2] = u.z;
+    w[3 * i] = o.x, w[3 * i + 1] = o.y, w[3 * i + 2] = o.z;
+  }
+  const double r = c.radius();
+  const double mass = c.density * 4.0 / 3.0 * M_PI * r * r * r;
+  FilmSummary s = summarize_film(c, static_cast<long>(n), x.data(), v.data(), w.data(), mass, 0.4 * mass * r * r);
+  s.pair_contacts = static_cast<double>(sim.neighbour_stats().pair_contacts);
+  return s;
+}
+
+dem::SimulationConfig make_config(const FilmCase& c, const FilmState& s, const CentrecRunSettings& r) {
+  dem::SimulationConfig cfg;
+  cfg.gravity = {0.0, c.gravity_y(), c.gravity_z()};
+  cfg.dt = c.dt;
+  cfg.skin_fraction = r.skin_fraction;
+  cfg.periodic_z = true;
+  cfg.z_lo = 0.0;
+  cfg.z_hi = s.length;
+  cfg.drum = {{0, 0, 0}, {0, 0, 1}, c.omega()};
+  // LIGGGHTS' mesh walls give the rolling model the particle's absolute spin (DESIGN.md
+  // section 3): use the same form so both engines compute the same torques.
+  cfg.wall_rolling = dem::WallRolling::liggghts;
+  cfg.threads = r.threads;
+  return cfg;
+}
+
+}  // namespace
+
+EngineResult run_centrec(const FilmCase& c, const FilmState& s, const CentrecRunSettings& r) {
+  EngineResult res;
+  res.engine = "centrec";
+  res.workers = r.threads;
+  res.particles = static_cast<long>(s.particles.size());
+  res.steps = r.timed_steps;
+  try {
+    const std::size_t rss0 = resident_bytes();
+    dem::Simulation sim(make_config(c, s, r));
+    // Particles and the wall as two materials (same E, nu; per-pair e, mu, mu_r), as the
+    // deck's atom types 1 and 2.
+    const int grain = sim.add_material({c.youngs_modulus, c.poisson_ratio, c.density});
+    const int wall_mat = sim.add_material({c.youngs_modulus, c.poisson_ratio, c.density});
+    sim.set_interaction(grain, grain, {c.restitution, c.friction, c.rolling_friction});
+    sim.set_interaction(grain, wall_mat, {c.restitution, c.wall_friction, c.wall_rolling_friction});
+    sim.add_wall(dem::Wall::cylinder({0, 0, 0}, {0, 0, 1}, c.drum_radius, -INFINITY, INFINITY, c.omega(), wall_mat));
+    for (const auto& p : s.particles) {
+      dem::ParticleInit in;
+      in.x = {p.x[0], p.x[1], p.x[2]};
+      in.v = {p.v[0], p.v[1], p.v[2]};
+      in.w = {p.w[0], p.w[1], p.w[2]};
+      in.radius = 0.5 * s.diameter;
+      in.material = grain;
+      sim.add_particle(in);
+    }
+    sim.setup();
+    sim.step(r.settle_steps);
+    res.settled = summarize(c, sim);
+    res.bytes_per_particle = static_cast<double>(sim.memory_bytes()) / res.particles;
+    const std::size_t rss1 = resident_bytes();
+    if (rss1 > rss0) res.rss_bytes_per_particle = static_cast<double>(rss1 - rss0) / res.particles;
+    for (int k = 0; k < r.repeats; ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      sim.step(r.timed_steps);
+      const auto t1 = std::chrono::steady_clock::now();
+      res.seconds.push_back(std::chrono::duration<double>(t1 - t0).count());
+    }
+    res.final = summarize(c, sim);
+    res.ok = res.final.atoms == res.particles;
+    if (!res.ok) res.note = "centrec lost particles";
+  } catch (const std::exception& e) {
+    res.note = std::string("centrec failed: ") + e.what();
+  }
+  return res;
+}
+
+}  // namespace centrec::bench
