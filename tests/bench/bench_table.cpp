@@ -60,8 +60,8 @@ std::string format_markdown(const FilmCase& fc, const std::vector<BenchRow>& row
       "\n| N | threads/ranks | centrec p-steps/s | LIGGGHTS p-steps/s | ratio | centrec /core | LIGGGHTS /core "
       "| contacts/particle centrec | contacts/particle LIGGGHTS | wall contacts/particle c / L "
       "| bytes/particle centrec | bytes/particle LIGGGHTS | cost/particle vs smallest N c / L "
-      "| timed phase s, min-max c / L |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "| timed phase s, min-max c / L | list pairs/particle c / L | rebuilds/phase c / L |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
     const auto& c = row.centrec;
     const auto& l = row.liggghts;
@@ -72,12 +72,11 @@ std::string format_markdown(const FilmCase& fc, const std::vector<BenchRow>& row
           sci(c, pc / row.workers) + " | " + sci(l, pl / row.workers) + " | " + fix2(c, contacts_per_particle(c)) +
           " | " + fix2(l, contacts_per_particle(l)) + " | " + fix2(c, wall_per_particle(c)) + " / " +
           fix2(l, wall_per_particle(l)) + " | " +
-          (c.ok ? fmt("%.0f", c.bytes_per_particle) + (c.rss_bytes_per_particle > 0
-                                                            ? " (RSS " + fmt("%.0f", c.rss_bytes_per_particle) + ")"
-                                                            : std::string())
-                : "-") +
+          (c.ok ? fmt("%.0f", c.bytes_per_particle) : "-") +
           " | " + (l.ok ? fmt("%.0f", l.bytes_per_particle) : "-") + " | " + relative_cost(c, base.centrec) + " / " +
-          relative_cost(l, base.liggghts) + " | " + spread(c) + " / " + spread(l) + " |\n";
+          relative_cost(l, base.liggghts) + " | " + spread(c) + " / " + spread(l) + " | " +
+          fix2(c, c.list_pairs_per_particle) + " / " + fix2(l, l.list_pairs_per_particle) + " | " +
+          fix2(c, c.rebuilds_per_phase) + " / " + fix2(l, l.rebuilds_per_phase) + " |\n";
   }
   md +=
       "\nFilm state reached by each engine (same initial file; contacts per particle = 2 x overlapping pairs / N; "
@@ -105,17 +104,18 @@ void write_csv(const std::string& path, const std::vector<BenchRow>& rows) {
   if (!f) throw std::runtime_error("cannot write " + path);
   std::fprintf(f,
                "engine,particles,workers,steps,median_s,particle_steps_per_s,per_core,contacts_per_particle,"
-               "wall_contacts_per_particle,bytes_per_particle,rss_bytes_per_particle,final_ke,final_mean_speed,"
-               "final_mean_omega_z,ok,seconds\n");
+               "wall_contacts_per_particle,bytes_per_particle,rss_bytes_per_particle,list_pairs_per_particle,"
+               "rebuilds_per_phase,final_ke,final_mean_speed,final_mean_omega_z,ok,seconds\n");
   for (const auto& row : rows)
     for (const EngineResult* r : {&row.centrec, &row.liggghts}) {
       if (r->engine.empty()) continue;
       std::string secs;
       for (double s : r->seconds) secs += (secs.empty() ? "" : ";") + fmt("%.6f", s);
       const double p = r->particle_steps_per_second();
-      std::fprintf(f, "%s,%ld,%d,%ld,%.6f,%.6g,%.6g,%.4f,%.4f,%.1f,%.1f,%.6g,%.6g,%.6g,%d,%s\n", r->engine.c_str(),
+      std::fprintf(f, "%s,%ld,%d,%ld,%.6f,%.6g,%.6g,%.4f,%.4f,%.1f,%.1f,%.4f,%.2f,%.6g,%.6g,%.6g,%d,%s\n", r->engine.c_str(),
                    r->particles, r->workers, r->steps, r->median_seconds(), p, p / r->workers,
                    contacts_per_particle(*r), wall_per_particle(*r), r->bytes_per_particle, r->rss_bytes_per_particle,
+                   r->list_pairs_per_particle, r->rebuilds_per_phase,
                    r->final.kinetic_energy, r->final.mean_speed, r->final.mean_omega_z, r->ok ? 1 : 0, secs.c_str());
     }
   if (std::fclose(f) != 0) throw std::runtime_error("error writing " + path);

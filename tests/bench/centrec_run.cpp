@@ -79,6 +79,7 @@ EngineResult run_centrec(const FilmCase& c, const FilmState& s, const CentrecRun
     res.bytes_per_particle = static_cast<double>(sim.memory_bytes()) / res.particles;
     const std::size_t rss1 = resident_bytes();
     if (rss1 > rss0) res.rss_bytes_per_particle = static_cast<double>(rss1 - rss0) / res.particles;
+    const std::size_t rebuilds0 = sim.neighbour_stats().rebuilds;
     for (int k = 0; k < r.repeats; ++k) {
       const auto t0 = std::chrono::steady_clock::now();
       sim.step(r.timed_steps);
@@ -86,6 +87,10 @@ EngineResult run_centrec(const FilmCase& c, const FilmState& s, const CentrecRun
       res.seconds.push_back(std::chrono::duration<double>(t1 - t0).count());
     }
     res.final = summarize(c, sim);
+    const dem::NeighbourStats ns = sim.neighbour_stats();
+    // centrec's lists are full (each pair in both rows): halve to compare with LIGGGHTS.
+    res.list_pairs_per_particle = 0.5 * static_cast<double>(ns.list_entries) / res.particles;
+    res.rebuilds_per_phase = static_cast<double>(ns.rebuilds - rebuilds0) / r.repeats;
     res.ok = res.final.atoms == res.particles;
     if (!res.ok) res.note = "centrec lost particles";
   } catch (const std::exception& e) {

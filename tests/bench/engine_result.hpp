@@ -27,6 +27,10 @@ struct EngineResult {
   std::vector<double> seconds;     // wall time of each timed phase
   double bytes_per_particle = 0.0; // engine-reported memory / N
   double rss_bytes_per_particle = 0.0;  // centrec only: RSS growth / N (0 if unknown)
+  // Work done besides the contacts: neighbour pairs in the list (each pair once) per
+  // particle at the end, and neighbour-list rebuilds per timed phase (mean).
+  double list_pairs_per_particle = 0.0;
+  double rebuilds_per_phase = 0.0;
   FilmSummary settled, final;
   std::string note;                // e.g. why a run failed
   bool ok = false;

@@ -64,6 +64,11 @@ LiggghtsLog parse_liggghts_log(const std::string& path) {
         log.timed_loop_steps.push_back(steps);
         log.atoms_in_loop = atoms;
       }
+    } else if (starts_with(line, "Ave neighs/atom = ")) {
+      // Half list (newton off: pairs across a rank boundary are held by both ranks).
+      if (starts_with(phase, "timed")) log.neighs_per_atom = std::stod(line.substr(18));
+    } else if (starts_with(line, "Neighbor list builds = ")) {
+      if (starts_with(phase, "timed")) log.timed_rebuilds += std::stol(line.substr(23));
     } else if (log.error.empty() && line.find("ERROR") != std::string::npos) {
       log.error = line;
     }

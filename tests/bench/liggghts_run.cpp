@@ -52,6 +52,8 @@ EngineResult run_liggghts(const FilmCase& c, const FilmState& s, const LiggghtsR
   }
   res.seconds = parsed.timed_loop_seconds;
   res.settled = parsed.settled;
+  res.list_pairs_per_particle = parsed.neighs_per_atom;
+  if (!res.seconds.empty()) res.rebuilds_per_phase = static_cast<double>(parsed.timed_rebuilds) / res.seconds.size();
   res.final = parsed.final;
   res.bytes_per_particle = parsed.memory_mbytes_per_rank * 1024.0 * 1024.0 * r.deck.ranks / res.particles;
   res.ok = rc == 0 && parsed.error.empty() && parsed.have_final &&
