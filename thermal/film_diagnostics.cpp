@@ -43,7 +43,8 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
                     &b.inlet_conduction, &b.storage, &b.residual})
     *x *= g.perimeter;
   b.mass_flow = m_out * g.perimeter;
-  b.T_out = model_.heat.temperature(H_out / m_out);
+  // A resting film has no outlet stream: report the inlet temperature.
+  b.T_out = m_out > 0 ? model_.heat.temperature(H_out / m_out) : model_.T_in;
   b.efficiency = b.incident > 0 ? b.carried / b.incident : 0.0;
   return b;
 }

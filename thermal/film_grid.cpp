@@ -52,10 +52,13 @@ FilmGrid build_film_grid(const FilmField& film, const FilmGridSpec& spec, double
       g.m_axial[i * nxi + j] = m;
       total += m;
     }
-    if (!(total > 0.0))
-      throw std::invalid_argument("film field: no mass flux through the section at z = " + std::to_string(z) +
-                                  " m (all velocities zero)");
     if (i == 0) g.mass_flux = total;
+    // A resting film (no flow at all) is allowed (pure conduction); a film that flows at one
+    // section and rests at another is not.
+    if ((g.mass_flux > 0.0) != (total > 0.0))
+      throw std::invalid_argument("film field: mass flux is zero at some sections only (z = " + std::to_string(z) +
+                                  " m)");
+    if (!(total > 0.0)) continue;
     const double scale = g.mass_flux / total;
     g.max_flux_correction = std::max(g.max_flux_correction, std::abs(scale - 1.0));
     for (int j = 0; j < nxi; ++j) g.m_axial[i * nxi + j] *= scale;

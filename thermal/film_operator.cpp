@@ -232,14 +232,25 @@ double FilmOperator::steady_residual(double t, const double* y) {
   double scale = 0.0;
   for (int i = 0; i < grid_.nz; ++i) scale += model_.material.alpha * q_column_[i] * in.flux_factor * grid_.dz;
   scale = std::max(scale, grid_.mass_flux * in.flow_factor * model_.heat.cp(model_.T_in) * 1.0);
+  if (!(scale > 0.0)) {
+    // Neither flux nor flow (a resting film with sources): heating the film by 1 K over
+    // its conduction time.
+    double capacity = 0.0;
+    for (long p = 0; p < n; ++p) capacity += props_[p].capacity;
+    scale = capacity / time_scale();
+  }
   return sum / scale;
 }
 
 double FilmOperator::time_scale() const {
-  // Residence time = hold-up / mass flux.
+  // Residence time = hold-up / mass flux, or for a resting film the conduction time
+  // across it at the inlet state.
   double holdup = 0.0;
   for (int p = 0; p < size(); ++p) holdup += model_.material.rho_s * grid_.phi[p] * grid_.volume(p / grid_.nxi);
-  return holdup / grid_.mass_flux;
+  if (grid_.mass_flux > 0.0) return holdup / grid_.mass_flux;
+  const CellProps c = props(0, model_.T_in);
+  const double t = grid_.tc[0];
+  return model_.material.rho_s * grid_.phi[0] * c.cp * t * t / c.kn;
 }
 
 }  // namespace centrec::thermal

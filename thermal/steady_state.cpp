@@ -13,7 +13,8 @@ namespace centrec::thermal {
 namespace {
 // Damped Newton on f(y) = 0 with the system's band Jacobian. Returns the iterations used;
 // y and residual hold the best state found.
-int newton_polish(OdeSystem& sys, std::vector<double>& y, double& residual, const SteadySettings& s) {
+int newton_polish(OdeSystem& sys, std::vector<double>& y, double& residual, const SteadySettings& s,
+                  int max_iterations) {
   const long n = sys.size();
   SUNContext ctx = nullptr;
   SUNContext_Create(nullptr, &ctx);
@@ -22,7 +23,7 @@ int newton_polish(OdeSystem& sys, std::vector<double>& y, double& residual, cons
   SUNLinearSolver LS = SUNLinSol_Band(x, A, ctx);
   std::vector<double> f(n), trial(n);
   int it = 0;
-  for (; it < s.max_newton && residual > s.tolerance; ++it) {
+  for (; it < max_iterations && residual > s.tolerance; ++it) {
     if (!sys.rhs(0.0, y.data(), f.data())) break;
     SUNMatZero(A);
     const BandEntrySink sink = [A](long r, long c, double v) { SM_ELEMENT_B(A, r, c) = v; };
@@ -58,6 +59,17 @@ SteadyResult solve_steady(OdeSystem& sys, const std::vector<double>& y0, const S
   SteadyResult r;
   r.y = y0;
   r.residual = sys.steady_residual(0.0, r.y.data());
+  if (s.newton_first && r.residual > s.tolerance) {
+    std::vector<double> y = r.y;
+    double res = r.residual;
+    const int it = newton_polish(sys, y, res, s, s.max_newton_first);
+    r.newton_iterations += it;
+    if (res <= s.tolerance) {
+      r.y = y;
+      r.residual = res;
+      return r;
+    }
+  }
   const double tau = sys.time_scale();
   CvodeIntegrator cv(sys, s.integrator, 0.0, r.y);
   double t = 0.0, t_next = 0.05 * tau;
@@ -65,7 +77,7 @@ SteadyResult solve_steady(OdeSystem& sys, const std::vector<double>& y0, const S
   while (r.residual > s.tolerance) {
     if (r.residual < s.polish_below) {
       const double before = r.residual;
-      r.newton_iterations += newton_polish(sys, r.y, r.residual, s);
+      r.newton_iterations += newton_polish(sys, r.y, r.residual, s, s.max_newton);
       if (r.residual <= s.tolerance) break;
       restart = r.residual < before;  // Newton moved y: CVODE must restart from there
     }
@@ -85,6 +97,7 @@ SteadyResult solve_steady(OdeSystem& sys, const std::vector<double>& y0, const S
     r.residual = sys.steady_residual(t, r.y.data());
   }
   r.march_time = t;
+  r.marched = true;
   r.stats = cv.stats();
   return r;
 }
