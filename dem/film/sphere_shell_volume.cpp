@@ -1,0 +1,88 @@
+#include "sphere_shell_volume.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace centrec::film {
+
+namespace {
+constexpr int kGauss = 24;
+
+// Gauss-Legendre nodes and weights on [-1, 1], by Newton iteration on P_n.
+struct GaussLegendre {
+  std::array<double, kGauss> x{}, w{};
+  GaussLegendre() {
+    const int n = kGauss;
+    for (int i = 0; i < n; ++i) {
+      double z = std::cos(M_PI * (i + 0.75) / (n + 0.5));
+      double dp = 0.0;
+      for (int it = 0; it < 100; ++it) {
+        double p0 = 1.0, p1 = z;
+        for (int k = 2; k <= n; ++k) {
+          const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+          p0 = p1;
+          p1 = p2;
+        }
+        dp = n * (z * p1 - p0) / (z * z - 1.0);
+        const double dz = p1 / dp;
+        z -= dz;
+        if (std::fabs(dz) < 1e-15) break;
+      }
+      x[i] = z;
+      w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
+    }
+  }
+};
+
+const GaussLegendre& gauss() {
+  static const GaussLegendre g;
+  return g;
+}
+}  // namespace
+
+double disk_in_circle_area(double rho, double s, double c) {
+  if (s <= 0.0 || rho <= 0.0) return 0.0;
+  if (c >= rho + s) return 0.0;                                // apart
+  if (c <= std::fabs(rho - s)) return M_PI * std::min(rho, s) * std::min(rho, s);  // one inside the other
+  // Lens of two overlapping circles at centre distance c.
+  const double a1 = std::clamp((c * c + rho * rho - s * s) / (2.0 * c * rho), -1.0, 1.0);
+  const double a2 = std::clamp((c * c + s * s - rho * rho) / (2.0 * c * s), -1.0, 1.0);
+  const double k = std::max(0.0, (-c + rho + s) * (c + rho - s) * (c - rho + s) * (c + rho + s));
+  return rho * rho * std::acos(a1) + s * s * std::acos(a2) - 0.5 * std::sqrt(k);
+}
+
+double sphere_in_cylinder_volume(double rho, double a, double c) {
+  const double v_sphere = 4.0 / 3.0 * M_PI * a * a * a;
+  if (rho <= 0.0) return 0.0;
+  if (c + a <= rho) return v_sphere;
+  if (c - a >= rho) return 0.0;
+  // Breakpoints in zeta in [0, a]: the slice radius s equals |rho - c| or rho + c.
+  std::array<double, 4> cut{0.0, a, a, a};
+  int nc = 1;
+  for (double b : {std::fabs(rho - c), rho + c})
+    if (b < a) cut[nc++] = std::sqrt(a * a - b * b);
+  cut[nc++] = a;
+  for (int i = 1; i < nc; ++i)  // insertion sort of at most four values
+    for (int j = i; j > 0 && cut[j] < cut[j - 1]; --j) std::swap(cut[j], cut[j - 1]);
+  const GaussLegendre& g = gauss();
+  double v = 0.0;
+  for (int k = 0; k + 1 < nc; ++k) {
+    const double lo = cut[k], hi = cut[k + 1];
+    if (hi <= lo) continue;
+    const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    for (int i = 0; i < kGauss; ++i) {
+      const double zeta = mid + half * g.x[i];
+      v += g.w[i] * half * disk_in_circle_area(rho, std::sqrt(std::max(0.0, a * a - zeta * zeta)), c);
+    }
+  }
+  return 2.0 * v;  // the sphere is symmetric in zeta
+}
+
+double sphere_in_shell_volume(double r_in, double r_out, double a, double c) {
+  if (r_out <= r_in) return 0.0;
+  return sphere_in_cylinder_volume(r_out, a, c) - sphere_in_cylinder_volume(r_in, a, c);
+}
+
+}  // namespace centrec::film

@@ -1,0 +1,41 @@
+#pragma once
+// Synthetic particle films of known geometry for the sampler tests: layered lattices and
+// random packings in an annulus R - t <= r <= R, and a holder for
+// structure-of-arrays snapshots.
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "dem/film/particle_arrays.hpp"
+
+namespace centrec::film::test {
+
+struct Particles {
+  std::vector<double> x, y, z, vx, vy, vz, radius;
+  std::vector<std::int64_t> id;
+  double time = 0.0;
+  void add(double px, double py, double pz, double r);
+  std::size_t size() const { return x.size(); }
+  ParticleArrays view() const;
+};
+
+// Layers of spheres (diameter d) at centre wall distances d/2 + k h, k = 0..layers-1,
+// each a ring lattice of the same angular count (chord >= a_theta on the innermost ring,
+// so outer rings are slightly sparser) and axial spacing
+// a_z over [0, length); odd layers shifted by half a spacing in theta and z when
+// `stagger` is set. Returns the particles; the film's true thickness is
+// d/2 + (layers - 1) h + d/2.
+Particles layered_lattice(double R, double length, double d, int layers, double h, double a_theta, double a_z,
+                          bool stagger);
+
+// A random (fluid-like) packing of spheres of diameter d at solid fraction phi in the
+// annulus of thickness t (periodic in z over [0, length)): random centres, then overlap
+// relaxation (overlapping pairs pushed apart, centres held between the walls) until no
+// pair overlaps by more than 1e-9 d. Throws std::runtime_error if it does not converge.
+Particles random_packing(double R, double t, double length, double d, double phi, std::mt19937_64& rng);
+
+// Smallest centre distance minus the sum of radii over all pairs (negative = overlap),
+// with z periodic over `length`.
+double min_gap(const Particles& p, double length);
+
+}  // namespace centrec::film::test
