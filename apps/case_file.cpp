@@ -7,6 +7,8 @@ CaseFile read_case_file(const std::string& path) {
   CaseFile c;
   c.path = path;
   c.title = root.string("title", "");
+  root.string("description", "");
+  if (root.has("dem")) c.dem = read_dem_case(root.child("dem"));
   root.finish();
   c.resolved_yaml = root.resolved_text();
   return c;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "case_dem.hpp"
 #include "strict_yaml.hpp"
 
 namespace centrec::cli {
@@ -12,6 +13,7 @@ namespace centrec::cli {
 struct CaseFile {
   std::string path;
   std::string title;
+  std::optional<DemCase> dem;
   std::string resolved_yaml;  // the fully resolved configuration, echoed into outputs
 };
 

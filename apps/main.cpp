@@ -10,6 +10,7 @@ namespace centrec::cli {
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
+      {"dem", "run the DEM of a CentRec drum or periodic slice (DEM-only mode)", cmd_dem},
       {"validate", "check a YAML case and print its fully resolved configuration", cmd_validate},
   };
   return table;

@@ -112,7 +112,7 @@ double MapReader::number(const std::string& key, double default_value, Range ran
     throw ConfigError((on ? where(n) : where(node_)) + ": " + key_path(key) + " = " + fmt(v) +
                       " is out of the allowed range " + range.describe() + (unit.empty() ? "" : " " + unit));
   }
-  resolved_here_[key] = v;
+  resolved_here_[key] = YAML::Node(fmt(v));
   return v;
 }
 
@@ -194,7 +194,7 @@ std::vector<double> MapReader::numbers(const std::string& key, const std::vector
     }
   }
   YAML::Node seq(YAML::NodeType::Sequence);
-  for (double x : v) seq.push_back(x);
+  for (double x : v) seq.push_back(fmt(x));
   seq.SetStyle(YAML::EmitterStyle::Flow);
   resolved_here_[key] = seq;
   return v;

@@ -1,0 +1,24 @@
+#pragma once
+// The `dem:` section of a case file -> the CentRec scene config and the run settings.
+#include <string>
+
+#include "dem/scene/scene_config.hpp"
+#include "strict_yaml.hpp"
+
+namespace centrec::cli {
+
+struct DemRunSpec {
+  double duration = 1.0;          // s of simulated time
+  double progress_interval = 0.0; // s of wall time between progress lines (0 = auto)
+  double flow_window_turns = 5.0; // turns over which inlet/outlet mass flows are averaged
+};
+
+struct DemCase {
+  dem::scene::SceneConfig scene;
+  DemRunSpec run;
+};
+
+// Reads `dem` (a child mapping of the case root); strict: unknown keys are errors.
+DemCase read_dem_case(yaml::MapReader dem);
+
+}  // namespace centrec::cli

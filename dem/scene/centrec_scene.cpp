@@ -1,0 +1,184 @@
+#include "dem/scene/centrec_scene.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "dem/scene/packed_film.hpp"
+#include "dem/scene/size_distribution.hpp"
+#include "dem/scene/wall_lattice.hpp"
+
+namespace centrec::dem::scene {
+
+namespace {
+
+SimulationConfig engine_config(const SceneConfig& c) {
+  SimulationConfig s;
+  const double g = c.gravity, tilt = c.drum.tilt;
+  s.gravity = {0.0, -g * std::cos(tilt), g * std::sin(tilt)};
+  s.dt = c.dt;
+  s.max_impact_speed = c.max_impact_speed;
+  s.drum.origin = {0.0, 0.0, 0.0};
+  s.drum.axis = {0.0, 0.0, 1.0};
+  s.drum.omega = c.drum.omega;
+  s.wall_rolling = c.wall_rolling;
+  s.threads = c.threads;
+  if (c.slice.enabled) {
+    s.periodic_z = true;
+    s.z_lo = 0.0;
+    s.z_hi = c.slice.length;
+  }
+  return s;
+}
+
+void check(const SceneConfig& c) {
+  const double R = 0.5 * c.drum.diameter, d = c.particle.diameter;
+  if (!(R > 10.0 * d)) throw std::invalid_argument("drum.diameter must exceed 20 particle diameters");
+  if (c.drum.lip_height < 0.0 || c.drum.lip_height > 0.5 * R)
+    throw std::invalid_argument("drum.lip_height must be in [0, R/2]");
+  if (c.slice.enabled && c.slice.length < 3.0 * d)
+    throw std::invalid_argument("slice.length must be at least 3 particle diameters");
+  if (c.feeder.enabled && !c.slice.enabled) {
+    if (!(c.feeder.radial_offset > 0.0 && c.feeder.radial_offset < R))
+      throw std::invalid_argument("feeder.radial_offset must lie inside the drum radius");
+    if (c.feeder.axial_start + c.feeder.axial_length > c.drum.length)
+      throw std::invalid_argument("feeder region extends past the drum length");
+  }
+}
+
+}  // namespace
+
+CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
+  check(cfg_);
+  sim_ = std::make_unique<Simulation>(engine_config(cfg_));
+  // The engine's default material 0 stays unused; the scene adds its particles and wall.
+  const int p = sim_->add_material(cfg_.particle.material);
+  const int w = sim_->add_material(cfg_.wall_material);
+  sim_->set_interaction(p, p, cfg_.particle_particle);
+  sim_->set_interaction(p, w, cfg_.particle_wall);
+  particle_material_ = p;
+  wall_material_ = w;
+  build_walls();
+
+  const double R = drum_radius();
+  const bool periodic = cfg_.slice.enabled;
+  const double zmax = periodic ? cfg_.slice.length : cfg_.drum.length;
+  double inset = 0.0;
+  if (cfg_.rough_wall.enabled) {
+    for (const Vec3& c : rough_wall_centres(cfg_.rough_wall, R, 0.0, zmax, periodic)) {
+      ParticleInit g;
+      g.x = c;
+      g.v = cross(Vec3{0, 0, cfg_.drum.omega}, c);
+      g.w = {0, 0, cfg_.drum.omega};
+      g.radius = 0.5 * cfg_.rough_wall.sphere_diameter;
+      g.material = p;
+      g.motion = Motion::drum;
+      sim_->add_particle(g);
+      ++glued_;
+    }
+    inset = cfg_.rough_wall.sphere_diameter;
+  }
+
+  if (cfg_.initial_film.particles > 0) {
+    SizeSampler sizes(cfg_.particle, cfg_.seed + 1);
+    std::vector<double> radii(static_cast<std::size_t>(cfg_.initial_film.particles));
+    for (double& r : radii) r = 0.5 * sizes.next_diameter();
+    const double z0 = periodic ? 0.0 : cfg_.initial_film.axial_from;
+    const double z1 = periodic ? zmax : (cfg_.initial_film.axial_to > 0.0 ? cfg_.initial_film.axial_to : zmax);
+    for (const FilmSite& s : packed_film_sites(radii, R, inset, z0, z1, periodic)) {
+      ParticleInit f;
+      f.x = s.x;
+      f.v = cross(Vec3{0, 0, cfg_.drum.omega}, s.x);  // rigid co-rotation
+      f.w = {0, 0, cfg_.drum.omega};
+      f.radius = s.radius;
+      f.material = p;
+      sim_->add_particle(f);
+    }
+  }
+
+  if (cfg_.feeder.enabled && !periodic) feeder_ = std::make_unique<Feeder>(cfg_, cfg_.seed);
+  sim_->setup();
+  steps_per_batch_ = std::max<std::int64_t>(1, std::llround(cfg_.feeder.interval / sim_->dt()));
+  record(0.0, 0.0);
+}
+
+void CentrecScene::build_walls() {
+  const double R = drum_radius(), L = cfg_.drum.length, om = cfg_.drum.omega;
+  const Vec3 o{0, 0, 0}, z{0, 0, 1};
+  const int w = wall_material_;
+  if (cfg_.slice.enabled) {
+    sim_->add_wall(Wall::cylinder(o, z, R, -1e30, 1e30, om, w));
+    return;
+  }
+  sim_->add_wall(Wall::cylinder(o, z, R, 0.0, L, om, w));
+  if (cfg_.drum.back_plate) sim_->add_wall(Wall::disc(o, z, R, 0.0, om, w));
+  if (cfg_.drum.lip_height > 0.0) sim_->add_wall(Wall::disc(Vec3{0, 0, L}, z, R, R - cfg_.drum.lip_height, om, w));
+}
+
+double CentrecScene::turn_period() const { return 2.0 * M_PI / std::fabs(cfg_.drum.omega); }
+
+const FeederStats& CentrecScene::feeder_stats() const {
+  static const FeederStats none{};
+  return feeder_ ? feeder_->stats() : none;
+}
+
+std::int64_t CentrecScene::free_particles() const {
+  std::int64_t n = 0;
+  for (Motion m : sim_->motions()) n += (m == Motion::free);
+  return n;
+}
+
+double CentrecScene::holdup_mass() const {
+  double m = 0.0;
+  const auto& mo = sim_->motions();
+  const auto& ma = sim_->masses();
+  for (std::size_t i = 0; i < mo.size(); ++i)
+    if (mo[i] == Motion::free) m += ma[i];
+  return m;
+}
+
+void CentrecScene::advance(double duration) {
+  const double dt = sim_->dt();
+  std::int64_t remaining = std::llround(duration / dt);
+  const double R = drum_radius(), L = cfg_.drum.length;
+  const bool periodic = cfg_.slice.enabled;
+  while (remaining > 0) {
+    const std::int64_t n = std::min(remaining, steps_per_batch_);
+    if (feeder_) feeder_->feed(*sim_, n * dt);
+    sim_->step(n);
+    remaining -= n;
+    double out = 0.0, lost = 0.0;
+    if (!periodic) {
+      // Outlet: past z = L. Lost: anything that escaped the drum some other way.
+      const auto& x = sim_->positions();
+      const auto& m = sim_->masses();
+      const auto& mo = sim_->motions();
+      std::vector<std::int64_t> gone;
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        if (mo[i] != Motion::free) continue;
+        const bool past_outlet = x[i].z > L;
+        const bool escaped = x[i].z < -R || std::hypot(x[i].x, x[i].y) > 1.5 * R;
+        if (past_outlet || escaped) {
+          (past_outlet ? out : lost) += m[i];
+          gone.push_back(sim_->ids()[i]);
+        }
+      }
+      if (!gone.empty()) sim_->remove_particles(gone);
+    }
+    record(out, lost);
+  }
+}
+
+void CentrecScene::record(double out_mass, double lost_mass) {
+  out_total_ += out_mass;
+  lost_total_ += lost_mass;
+  MassFlowSample s;
+  s.time = sim_->time();
+  s.fed = feeder_ ? feeder_->stats().inserted_mass : 0.0;
+  s.out = out_total_;
+  s.lost = lost_total_;
+  s.holdup = holdup_mass();
+  s.particles = free_particles();
+  log_.push_back(s);
+}
+
+}  // namespace centrec::dem::scene

@@ -1,0 +1,83 @@
+#include "dem/scene/feeder.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "dem/scene/sphere_mass.hpp"
+
+namespace centrec::dem::scene {
+
+Feeder::Feeder(const SceneConfig& config, std::uint64_t seed)
+    : cfg_(config), sizes_(config.particle, seed), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {
+  next_diameter_ = sizes_.next_diameter();
+}
+
+double Feeder::feed(Simulation& sim, double elapsed) {
+  const FeederSpec& f = cfg_.feeder;
+  const double R = 0.5 * cfg_.drum.diameter;
+  const double rc = R - f.radial_offset;
+  const double dmax = sizes_.max_diameter();
+  stats_.requested_mass += f.mass_flow * elapsed;
+  backlog_ += f.mass_flow * elapsed;
+
+  // Candidates for overlap: particles near the region (a linear scan once per batch).
+  const double r_lo = rc - 0.5 * f.radial_height - dmax, r_hi = rc + 0.5 * f.radial_height + dmax;
+  const double z_lo = f.axial_start - dmax, z_hi = f.axial_start + f.axial_length + dmax;
+  const double half_arc = 0.5 * f.arc_width / rc + dmax / rc;
+  std::vector<Vec3> near;
+  std::vector<double> near_r;
+  const auto& x = sim.positions();
+  const auto& rad = sim.radii();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double r = std::hypot(x[i].x, x[i].y);
+    if (r < r_lo || r > r_hi || x[i].z < z_lo || x[i].z > z_hi) continue;
+    const double dth = std::remainder(std::atan2(x[i].y, x[i].x) - f.angle, 2.0 * M_PI);
+    if (std::fabs(dth) > half_arc) continue;
+    near.push_back(x[i]);
+    near_r.push_back(rad[i]);
+  }
+
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const double speed = cfg_.drum.omega * R;  // the wall's linear speed (paper section 4)
+  double inserted = 0.0;
+  for (;;) {
+    const double radius = 0.5 * next_diameter_;
+    const double m = sphere_mass(cfg_.particle.material.density, radius);
+    if (backlog_ < m) break;
+    bool placed = false;
+    for (int a = 0; a < f.max_attempts && !placed; ++a) {
+      const double r = rc + (u01(rng_) - 0.5) * (f.radial_height - 2.0 * radius > 0 ? f.radial_height - 2.0 * radius : 0.0);
+      const double th = f.angle + (u01(rng_) - 0.5) * (f.arc_width - 2.0 * radius) / rc;
+      const double z = f.axial_start + radius + u01(rng_) * std::max(0.0, f.axial_length - 2.0 * radius);
+      const Vec3 p{r * std::cos(th), r * std::sin(th), z};
+      bool free_spot = true;
+      for (std::size_t k = 0; k < near.size() && free_spot; ++k) {
+        const double s = radius + near_r[k];
+        if (norm2(p - near[k]) < s * s) free_spot = false;
+      }
+      if (!free_spot) continue;
+      ParticleInit init;
+      init.x = p;
+      // Tangential direction of the spin at p: (omega z) x r, normalised.
+      const double sgn = cfg_.drum.omega >= 0.0 ? 1.0 : -1.0;
+      init.v = Vec3{-std::sin(th), std::cos(th), 0.0} * (sgn * std::fabs(speed));
+      init.radius = radius;
+      sim.add_particle(init);
+      near.push_back(p);
+      near_r.push_back(radius);
+      placed = true;
+    }
+    if (!placed) {
+      ++stats_.deferred;
+      break;  // the region is full: keep the backlog for the next batch
+    }
+    backlog_ -= m;
+    inserted += m;
+    stats_.inserted_mass += m;
+    ++stats_.inserted;
+    next_diameter_ = sizes_.next_diameter();
+  }
+  return inserted;
+}
+
+}  // namespace centrec::dem::scene

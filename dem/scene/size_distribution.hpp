@@ -1,0 +1,20 @@
+#pragma once
+// Particle sizes drawn from the scene's distribution (mono, uniform, truncated normal).
+#include <random>
+
+#include "dem/scene/scene_config.hpp"
+
+namespace centrec::dem::scene {
+
+class SizeSampler {
+ public:
+  SizeSampler(const ParticleSpec& spec, std::uint64_t seed);
+  double next_diameter();
+  double max_diameter() const;
+
+ private:
+  ParticleSpec spec_;
+  std::mt19937_64 rng_;
+};
+
+}  // namespace centrec::dem::scene
