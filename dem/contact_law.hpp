@@ -10,16 +10,18 @@
 
 namespace centrec::dem {
 
+// Plain aggregate, built in one brace-initialisation in the hot loop (no default member
+// initialisers: a zero-fill then piecewise overwrite defeats store forwarding).
 struct ContactInput {
-  double delta = 0.0;  // overlap, m (> 0 in contact)
-  Vec3 n;              // unit normal from j (or the wall) to i
-  Vec3 v_contact;      // velocity of i's surface relative to j's at the contact point:
-                       // v_i - v_j - (arm_i w_i + arm_j w_j) x n   (wall: v_j = wall velocity there)
-  Vec3 w_rel;          // relative angular velocity seen by the rolling model
-  double r_eff = 0.0;  // R* (wall: R_i)
-  double m_eff = 0.0;  // m* (wall: m_i)
-  double arm_i = 0.0;  // lever arm of i to the contact point: R_i - delta/2 (LIGGGHTS c_r)
-  double arm_j = 0.0;  // same for j (wall: unused)
+  double delta;    // overlap, m (> 0 in contact)
+  Vec3 n;          // unit normal from j (or the wall) to i
+  Vec3 v_contact;  // velocity of i's surface relative to j's at the contact point:
+                   // v_i - v_j - (arm_i w_i + arm_j w_j) x n   (wall: v_j = wall velocity there)
+  Vec3 w_rel;      // relative angular velocity seen by the rolling model
+  double r_eff;    // R* (wall: R_i)
+  double m_eff;    // m* (wall: m_i)
+  double arm_i;    // lever arm of i to the contact point: R_i - delta/2 (LIGGGHTS c_r)
+  double arm_j;    // same for j (wall: 0)
 };
 
 struct ContactResult {

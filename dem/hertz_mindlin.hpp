@@ -19,12 +19,9 @@ struct HertzMindlinCoefficients {
 
 inline HertzMindlinCoefficients hertz_mindlin_coefficients(const PairConstants& c, double delta, double r_eff,
                                                            double m_eff) {
-  constexpr double kSqrtFiveSixths = 0.91287092917527685576;  // sqrt(5/6)
   const double root = std::sqrt(r_eff * delta);
-  const double sn = 2.0 * c.E_eff * root;
-  const double st = 8.0 * c.G_eff * root;
-  const double damp = -2.0 * kSqrtFiveSixths * c.beta;
-  return {(4.0 / 3.0) * c.E_eff * root, st, damp * std::sqrt(sn * m_eff), damp * std::sqrt(st * m_eff)};
+  const double q = std::sqrt(root * m_eff);  // sqrt(Sn m*) = sqrt(2 E*) q (see PairConstants)
+  return {(4.0 / 3.0) * c.E_eff * root, 8.0 * c.G_eff * root, c.damp_n * q, c.damp_t * q};
 }
 
 // Normal force magnitude on i along n: Fn = kn delta - gamma_n vn, with vn = v_rel.n

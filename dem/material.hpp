@@ -24,6 +24,11 @@ struct PairConstants {
   double beta = 0.0;    // ln(e)/sqrt(ln^2(e)+pi^2), < 0 (0 for e = 1)
   double mu = 0.0;
   double mu_r = 0.0;
+  // Dashpot prefactors: gamma_n = damp_n sqrt(sqrt(R* delta) m*) equals
+  // -2 sqrt(5/6) beta sqrt(Sn m*) with Sn = 2 E* sqrt(R* delta); damp_t likewise with
+  // St = 8 G* sqrt(R* delta). Saves two square roots per contact.
+  double damp_n = 0.0;  // -2 sqrt(5/6) beta sqrt(2 E*)
+  double damp_t = 0.0;  // -2 sqrt(5/6) beta sqrt(8 G*)
 };
 
 PairConstants make_pair_constants(const Material& a, const Material& b, const PairInteraction& p);

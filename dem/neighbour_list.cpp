@@ -130,7 +130,7 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
       if (norm2(d) < cut * cut) emit(j);
     });
   };
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for schedule(static) num_threads(threads) if (n >= kMinParallelParticles)
   for (long i = 0; i < n; ++i) {
     std::uint32_t k = 0;
     scan(i, [&](std::int32_t) { ++k; });
@@ -140,7 +140,7 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
   out.start = std::move(count);
   out.nbr.resize(out.start[n]);
   out.hist.assign(out.start[n], ContactHistory{});
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for schedule(static) num_threads(threads) if (n >= kMinParallelParticles)
   for (long i = 0; i < n; ++i) {
     std::uint32_t k = out.start[i];
     scan(i, [&](std::int32_t j) { out.nbr[k++] = j; });

@@ -13,6 +13,10 @@
 
 namespace centrec::dem {
 
+// Below this many particles loops run serially: waking a thread costs more than the work
+// (and on a busy machine a whole scheduler slice). Results do not depend on it.
+constexpr long kMinParallelParticles = 1024;
+
 struct NeighbourList {
   std::vector<std::uint32_t> start;  // rows + 1 offsets into nbr/hist
   std::vector<std::int32_t> nbr;     // partner index

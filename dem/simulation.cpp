@@ -72,6 +72,11 @@ struct Simulation::Impl {
   PeriodicZ pz;
   double skin = 0.0;
   std::vector<Vec3> x_build;                // positions at the last rebuild
+  // Displacements are measured in the drum's rotating frame when the whole scene is
+  // symmetric about the drum axis (pair distances and wall gaps do not change under the
+  // rigid rotation), so a co-rotating film does not trigger rebuilds at omega R / skin.
+  bool drum_frame = false;
+  double angle_since_build = 0.0;
   std::vector<ContactHistory> wall_hist;    // N x walls
   std::vector<std::uint32_t> wall_mask;     // candidate walls per particle
   std::vector<BlockTally> tallies;
@@ -329,6 +334,8 @@ void Simulation::rebuild() {
 
   const std::size_t n = x_.size();
   im.x_build = x_;
+  im.angle_since_build = 0.0;
+  im.drum_frame = scene_symmetric_about_drum();
   im.wall_mask.assign(n, 0u);
   for (std::size_t i = 0; i < n; ++i) {
     if (motion_[i] != Motion::free) continue;
@@ -339,6 +346,18 @@ void Simulation::rebuild() {
   }
   ++im.rebuilds;
   dirty_ = false;
+}
+
+bool Simulation::scene_symmetric_about_drum() const {
+  const DrumMotion& d = cfg_.drum;
+  if (d.omega == 0.0) return false;
+  auto parallel = [&](Vec3 a) { return norm(cross(a, d.axis)) < 1e-12; };
+  if (impl_->pz.on && !parallel({0, 0, 1})) return false;
+  for (const Wall& w : walls_) {
+    if (!(norm2(w.velocity) == 0.0) || !parallel(w.axis)) return false;
+    if (w.shape != WallShape::plane && norm(cross(w.origin - d.origin, d.axis)) > 1e-12) return false;
+  }
+  return true;
 }
 
 void Simulation::report_blow_up(std::size_t i, double overlap, const std::string& partner) const {
@@ -371,8 +390,10 @@ double Simulation::integrate_first_half() {
   const Vec3 spin = drum.omega * drum.axis;
   const PeriodicZ pz = impl_->pz;
   const Vec3* xb = impl_->x_build.data();
+  if (impl_->drum_frame) impl_->angle_since_build += drum.omega * dt;
+  const double cb = std::cos(impl_->angle_since_build), sb = std::sin(impl_->angle_since_build);
   double max_d2 = 0.0;
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : max_d2)
+#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles) reduction(max : max_d2)
   for (long i = 0; i < n; ++i) {
     if (motion_[i] == Motion::free) {
       v_[i] += (half * inv_m_[i]) * f_[i];
@@ -385,7 +406,7 @@ double Simulation::integrate_first_half() {
       w_[i] = spin;
     }
     x_[i].z = pz.wrap(x_[i].z);
-    Vec3 d = x_[i] - xb[i];
+    Vec3 d = x_[i] - (drum.origin + rotate(xb[i] - drum.origin, drum.axis, cb, sb));
     d.z = pz.image(d.z);
     const double d2 = norm2(d);
     // NaN compares false: force a rebuild so the force pass reports it.
@@ -397,7 +418,7 @@ double Simulation::integrate_first_half() {
 void Simulation::integrate_second_half() {
   const long n = static_cast<long>(x_.size());
   const double half = 0.5 * dt_;
-#pragma omp parallel for schedule(static) num_threads(threads_)
+#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
   for (long i = 0; i < n; ++i) {
     if (motion_[i] != Motion::free) continue;
     v_[i] += (half * inv_m_[i]) * f_[i];
@@ -426,7 +447,7 @@ void Simulation::compute_forces(bool update_history) {
   const int* MAT = mat_.data();
   const Motion* MOT = motion_.data();
 
-#pragma omp parallel for schedule(static) num_threads(threads_)
+#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
   for (long b = 0; b < nblocks; ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
     tally.wall_force.assign(nw, Vec3{});
@@ -450,7 +471,7 @@ void Simulation::compute_forces(bool update_history) {
         const double rsum = ri + R[j];
         const double dist2 = norm2(d);
         if (dist2 >= rsum * rsum) {
-          hist[e] = ContactHistory{};
+          if (!is_zero(hist[e])) hist[e] = ContactHistory{};  // separated: forget the pair
           continue;
         }
         const double dist = std::sqrt(dist2);
@@ -463,15 +484,17 @@ void Simulation::compute_forces(bool update_history) {
         // Canonical operand order (lower id first): both rows compute identical bits.
         const bool i_first = idi < ID[j];
         const long a = i_first ? i : j, c = i_first ? j : i;
-        ContactInput in;
-        in.delta = delta;
-        in.n = (1.0 / dist) * (i_first ? d : -d);
-        in.arm_i = R[a] - 0.5 * delta;
-        in.arm_j = R[c] - 0.5 * delta;
-        in.v_contact = contact_velocity(V[a] - V[c], Wv[a], Wv[c], in.arm_i, in.arm_j, in.n);
-        in.w_rel = Wv[a] - Wv[c];
-        in.r_eff = R[a] * R[c] / (R[a] + R[c]);
-        in.m_eff = M[a] * M[c] / (M[a] + M[c]);
+        const double ra = R[a], rc = R[c], ma = M[a], mc = M[c];
+        const Vec3 n = (1.0 / dist) * (i_first ? d : -d);
+        const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
+        const ContactInput in{delta,
+                              n,
+                              contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, n),
+                              Wv[a] - Wv[c],
+                              ra * rc / (ra + rc),
+                              ma * mc / (ma + mc),
+                              arm_a,
+                              arm_c};
         const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
         if (update_history) hist[e] = res.history;
         if (i_first) {
@@ -501,14 +524,15 @@ void Simulation::compute_forces(bool update_history) {
           tally.blowup_overlap = delta;
           tally.blowup_partner = "wall " + std::to_string(wi);
         }
-        ContactInput in;
-        in.delta = delta;
-        in.n = nrm;
-        in.arm_i = ri - 0.5 * delta;
-        in.v_contact = contact_velocity(V[i] - wall_velocity_at(wall, point), Wv[i], Vec3{}, in.arm_i, 0.0, nrm);
-        in.w_rel = relative_rolling ? Wv[i] - wall.angular_velocity : Wv[i];
-        in.r_eff = ri;
-        in.m_eff = M[i];
+        const double arm = ri - 0.5 * delta;
+        const ContactInput in{delta,
+                              nrm,
+                              contact_velocity(V[i] - wall_velocity_at(wall, point), Wv[i], Vec3{}, arm, 0.0, nrm),
+                              relative_rolling ? Wv[i] - wall.angular_velocity : Wv[i],
+                              ri,
+                              M[i],
+                              arm,
+                              0.0};
         const ContactResult res = evaluate_contact(pair(MAT[i], wall.material), in, h, dt);
         if (update_history) h = res.history;
         F += res.force;

@@ -152,6 +152,7 @@ class Simulation {
   void compute_forces(bool update_history);
   double integrate_first_half();  // returns the largest squared displacement since the last build
   void integrate_second_half();
+  bool scene_symmetric_about_drum() const;
   void invalidate_list();  // particles or walls changed: carry contacts, rebuild before the next step
   void permute_particles(const std::vector<std::int32_t>& order);
   void update_pair_constants();

@@ -4,6 +4,7 @@
 // outlet lip, annular weir of inner radius R - h). Each wall may translate (velocity) and
 // spin about its own symmetry axis through `origin` (angular_velocity); the surface
 // velocity velocity + angular_velocity x (p - origin) enters the contact law.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -46,7 +47,52 @@ struct WallContact {
 // Distance from the sphere centre p to the wall surface along the contact normal, and
 // the normal and surface point. Returns false when p is outside the wall's active region
 // (beyond a cylinder's axial extent, behind a plane, exactly on a disc plane's edge).
-bool wall_geometry(const Wall& w, Vec3 p, double& distance, Vec3& n, Vec3& point);
+// Inline: it runs for every candidate wall of every particle each step.
+inline bool wall_geometry(const Wall& w, Vec3 p, double& distance, Vec3& n, Vec3& point) {
+  const Vec3 d = p - w.origin;
+  const double s = dot(d, w.axis);
+  switch (w.shape) {
+    case WallShape::plane: {
+      if (s <= 0.0) return false;  // one-sided: behind the plane
+      distance = s;
+      n = w.axis;
+      point = p - s * w.axis;
+      return true;
+    }
+    case WallShape::cylinder: {
+      if (s < w.axial_min || s > w.axial_max) return false;
+      const Vec3 q = d - s * w.axis;
+      const double rho = norm(q);
+      if (rho == 0.0) return false;  // on the axis: no defined normal, and far from the wall
+      const Vec3 u = (1.0 / rho) * q;
+      distance = w.radius - rho;
+      n = -u;
+      point = w.origin + s * w.axis + w.radius * u;
+      return true;
+    }
+    case WallShape::disc: {
+      const Vec3 q = d - s * w.axis;
+      const double rho = norm(q);
+      // Closest point of the annulus: the in-plane radius clamped to [inner, outer]
+      // (covers the flat face and both rims, e.g. the lip edge a film flows over).
+      const double rc = std::clamp(rho, w.inner_radius, w.radius);
+      Vec3 c = w.origin;
+      if (rho > 0.0) {
+        c += (rc / rho) * q;
+      } else if (w.inner_radius > 0.0) {
+        return false;  // on the axis of a ring: equidistant from the whole rim
+      }
+      const Vec3 e = p - c;
+      distance = norm(e);
+      if (distance == 0.0) return false;
+      n = (1.0 / distance) * e;
+      point = c;
+      return true;
+    }
+  }
+  return false;
+}
+
 
 // Surface velocity of the wall at point p.
 inline Vec3 wall_velocity_at(const Wall& w, Vec3 p) { return w.velocity + cross(w.angular_velocity, p - w.origin); }

@@ -41,15 +41,10 @@ TEST(ContactLaw, ActionEqualsReactionForRandomStates) {
     h.roll = random_vec(rng, 1e-7);
     const double dt = 1e-6;
 
-    ContactInput from_i;  // n points from j to i
-    from_i.delta = delta;
-    from_i.n = n;
-    from_i.arm_i = ri - 0.5 * delta;
-    from_i.arm_j = rj - 0.5 * delta;
-    from_i.v_contact = contact_velocity(vi - vj, wi, wj, from_i.arm_i, from_i.arm_j, n);
-    from_i.w_rel = wi - wj;
-    from_i.r_eff = ri * rj / (ri + rj);
-    from_i.m_eff = mi * mj / (mi + mj);
+    const double arm_i = ri - 0.5 * delta, arm_j = rj - 0.5 * delta;
+    // n points from j to i
+    ContactInput from_i{delta,           n, contact_velocity(vi - vj, wi, wj, arm_i, arm_j, n), wi - wj,
+                        ri * rj / (ri + rj), mi * mj / (mi + mj), arm_i, arm_j};
     ContactInput from_j = from_i;  // the same pair with the roles swapped
     from_j.n = -n;
     from_j.arm_i = from_i.arm_j;
