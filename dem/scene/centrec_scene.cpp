@@ -5,6 +5,7 @@
 
 #include "dem/scene/packed_film.hpp"
 #include "dem/scene/size_distribution.hpp"
+#include "dem/scene/sphere_mass.hpp"
 #include "dem/scene/wall_lattice.hpp"
 
 namespace centrec::dem::scene {
@@ -22,6 +23,13 @@ SimulationConfig engine_config(const SceneConfig& c) {
   s.drum.omega = c.drum.omega;
   s.wall_rolling = c.wall_rolling;
   s.threads = c.threads;
+  // The engine's automatic blow-up limit looks at the particles present at set-up; a
+  // drum that starts empty has none, so derive it here from the largest feeder sphere:
+  // twice the Hertz overlap of a particle-particle impact at max_impact_speed.
+  const double r = 0.5 * SizeSampler(c.particle, 0).max_diameter();
+  const PairConstants pp = make_pair_constants(c.particle.material, c.particle.material, c.particle_particle);
+  const double m = sphere_mass(c.particle.material.density, r);
+  s.blowup_overlap_fraction = std::max(0.05, 2.0 * hertz_max_overlap(0.5 * m, 0.5 * r, pp.E_eff, c.max_impact_speed) / r);
   if (c.slice.enabled) {
     s.periodic_z = true;
     s.z_lo = 0.0;
@@ -95,7 +103,15 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
     }
   }
 
-  if (cfg_.feeder.enabled && !periodic) feeder_ = std::make_unique<Feeder>(cfg_, cfg_.seed);
+  if (cfg_.feeder.enabled && !periodic) {
+    feeder_ = std::make_unique<Feeder>(cfg_, cfg_.seed);
+    // An empty drum gives the engine nothing to advise dt from: insert the first batch
+    // now (it is the first batch's feed, so advance() skips feeding once).
+    if (sim_->size() == 0) {
+      feeder_->feed(*sim_, cfg_.feeder.interval);
+      prefed_ = true;
+    }
+  }
   sim_->setup();
   steps_per_batch_ = std::max<std::int64_t>(1, std::llround(cfg_.feeder.interval / sim_->dt()));
   record(0.0, 0.0);
@@ -143,7 +159,8 @@ void CentrecScene::advance(double duration) {
   const bool periodic = cfg_.slice.enabled;
   while (remaining > 0) {
     const std::int64_t n = std::min(remaining, steps_per_batch_);
-    if (feeder_) feeder_->feed(*sim_, n * dt);
+    if (feeder_ && !prefed_) feeder_->feed(*sim_, n * dt);
+    prefed_ = false;
     sim_->step(n);
     remaining -= n;
     double out = 0.0, lost = 0.0;

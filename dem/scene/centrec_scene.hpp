@@ -53,6 +53,7 @@ class CentrecScene {
   std::int64_t steps_per_batch_ = 1;
   std::int64_t glued_ = 0;
   int particle_material_ = 0, wall_material_ = 0;
+  bool prefed_ = false;  // the first batch was fed before set-up
   double out_total_ = 0.0, lost_total_ = 0.0;
 };
 

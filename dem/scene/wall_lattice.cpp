@@ -10,7 +10,8 @@ std::vector<Vec3> rough_wall_centres(const RoughWallSpec& spec, double R, double
   if (!(dg > 0.0) || !(a >= dg * (1.0 - 1e-9)))
     throw std::invalid_argument("rough_wall: spacing must be at least the glued sphere diameter (no overlap)");
   const double rc = R - 0.5 * dg;
-  const int n_theta = static_cast<int>(std::floor(2.0 * M_PI * rc / a));
+  // Count from the chord, not the arc, so neighbours on the curved wall are >= a apart.
+  const int n_theta = static_cast<int>(std::floor(M_PI / std::asin(std::min(1.0, a / (2.0 * rc)))));
   if (n_theta < 3) throw std::invalid_argument("rough_wall: spacing too large for the drum");
   const double dth = 2.0 * M_PI / n_theta;
   // Hexagonal: rows a sqrt(3)/2 apart, every other row shifted by half a spacing.
@@ -20,9 +21,11 @@ std::vector<Vec3> rough_wall_centres(const RoughWallSpec& spec, double R, double
   int n_rows;
   double dz;
   if (periodic) {
-    n_rows = static_cast<int>(std::lround(span / row));
-    if (hex && n_rows % 2) ++n_rows;  // an even row count keeps the shift periodic
-    if (n_rows < 1) n_rows = 1;
+    // Round down so rows are never closer than the lattice asks; an even count keeps
+    // the hexagonal shift periodic.
+    n_rows = static_cast<int>(std::floor(span / row));
+    if (hex && n_rows % 2) --n_rows;
+    if (n_rows < (hex ? 2 : 1)) throw std::invalid_argument("rough_wall: slice shorter than two lattice rows");
     dz = span / n_rows;
   } else {
     n_rows = static_cast<int>(std::floor((span - dg) / row)) + 1;
