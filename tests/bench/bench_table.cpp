@@ -44,9 +44,10 @@ void state_row(std::string& md, const FilmCase& fc, const BenchRow& row, const E
                const FilmSummary& s) {
   if (!r.ok && s.atoms == 0) return;
   char b[512];
-  std::snprintf(b, sizeof b, "| %ld | %d | %s | %s | %ld | %.4g | %.4g | %.4g | %.5f | %.3f | %.4f | %.2f | %.3f |\n",
+  std::snprintf(b, sizeof b, "| %ld | %d | %s | %s | %ld | %.4g | %.4g | %.4g | %.5f | %.3f | %.2f | %.4f | %.2f | %.3f |\n",
                 row.particles, row.workers, r.engine.c_str(), when, s.atoms, s.kinetic_energy, s.rotational_energy,
-                s.mean_speed, s.mean_omega_z, (fc.drum_radius - s.min_radius) / fc.diameter, s.mean_vz,
+                s.mean_speed, s.mean_omega_z, (fc.drum_radius - s.min_radius) / fc.diameter,
+                (s.max_radius + 0.5 * fc.diameter - fc.drum_radius) * 1e6, s.mean_vz,
                 s.atoms ? 2.0 * s.pair_contacts / s.atoms : 0.0, s.atoms ? s.wall_contacts / s.atoms : 0.0);
   md += b;
 }
@@ -80,10 +81,11 @@ std::string format_markdown(const FilmCase& fc, const std::vector<BenchRow>& row
   }
   md +=
       "\nFilm state reached by each engine (same initial file; contacts per particle = 2 x overlapping pairs / N; "
-      "wall = centres within d/2 of the analytic cylinder; thickness = (R - innermost centre)/d):\n\n"
+      "wall = centres within d/2 of the analytic cylinder; thickness = (R - innermost centre)/d; deepest wall "
+      "overlap = outermost centre + d/2 - R, small and positive while the wall holds every particle):\n\n"
       "| N | threads/ranks | engine | when | atoms | KE J | rot. KE J | mean speed m/s | mean omega_z rad/s "
-      "| thickness d | mean vz m/s | contacts/particle | wall/particle |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "| thickness d | deepest wall overlap um | mean vz m/s | contacts/particle | wall/particle |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
     for (const EngineResult* r : {&row.centrec, &row.liggghts}) {
       state_row(md, fc, row, *r, "settled", r->settled);

@@ -14,6 +14,7 @@ struct FilmSummary {
   double mean_speed = 0.0;         // mean |v|, m/s
   double mean_omega_z = 0.0;       // mean of (x vy - y vx)/(x^2 + y^2): drum co-rotation, rad/s
   double min_radius = 0.0;         // innermost particle centre, m (film free surface)
+  double max_radius = 0.0;         // outermost particle centre, m (< R: nobody left the drum)
   double mean_vz = 0.0;            // mean axial velocity, m/s (film drainage)
   double pair_contacts = 0.0;      // particle pairs overlapping
   double wall_contacts = 0.0;      // particles whose centre is within d/2 of the cylinder

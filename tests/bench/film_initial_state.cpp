@@ -1,5 +1,6 @@
 #include "tests/bench/film_initial_state.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -38,9 +39,10 @@ long film_particles_per_row(const FilmCase& c) {
 FilmState make_film_lattice(const FilmCase& c, long target_n) {
   const double a = row_spacing(c);
   const long per_row = film_particles_per_row(c);
-  // At least 4 rows: the 2-rank LIGGGHTS domain split along z needs each half longer
-  // than the neighbour cut-off.
-  const long rows = std::max(4L, std::lround(static_cast<double>(target_n) / per_row));
+  // At least 6 rows: centrec's periodic cell grid needs the period >= 3 cells of
+  // d + skin (skin up to 1 d), and each half of the 2-rank LIGGGHTS split along z must be
+  // longer than its neighbour cut-off.
+  const long rows = std::max(6L, std::lround(static_cast<double>(target_n) / per_row));
   FilmState s;
   s.length = rows * a;
   s.diameter = c.diameter;

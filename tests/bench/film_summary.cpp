@@ -26,6 +26,7 @@ FilmSummary summarize_film(const FilmCase& c, long n, const double* x, const dou
     omz += (p[0] * u[1] - p[1] * u[0]) / r2;
     vz += u[2];
     s.min_radius = std::min(s.min_radius, r);
+    s.max_radius = std::max(s.max_radius, r);
     if (r > wall_r) wall += 1;
   }
   const double inv = n > 0 ? 1.0 / n : 0.0;

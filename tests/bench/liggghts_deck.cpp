@@ -109,6 +109,7 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
                "compute vabs all reduce ave v_vabs\n"
                "compute omz all reduce ave v_omz\n"
                "compute rmin all reduce min v_rad\n"
+               "compute rmax all reduce max v_rad\n"
                "compute nwall all reduce sum v_onwall\n"
                "compute vz all reduce ave v_vzat\n",
                wall_r);
@@ -120,16 +121,17 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
                "variable s_vabs equal c_vabs\n"
                "variable s_omz equal c_omz\n"
                "variable s_rmin equal c_rmin\n"
+               "variable s_rmax equal c_rmax\n"
                "variable s_vz equal c_vz\n"
                "variable s_pairs equal c_cnsum/2\n"
                "variable s_wall equal c_nwall\n");
   auto report = [&](const char* tag) {
     std::fprintf(f,
                  "print \"BENCH_PHASE report\"\n"
-                 "thermo_style custom step atoms ke c_rke c_vabs c_omz c_rmin c_vz c_cnsum c_nwall\n"
+                 "thermo_style custom step atoms ke c_rke c_vabs c_omz c_rmin c_rmax c_vz c_cnsum c_nwall\n"
                  "run 0\n"
                  "print \"BENCH_STATE %s atoms ${s_atoms} ke ${s_ke} rke ${s_rke} mean_speed ${s_vabs} "
-                 "mean_omega_z ${s_omz} min_r ${s_rmin} mean_vz ${s_vz} pair_contacts ${s_pairs} wall_contacts "
+                 "mean_omega_z ${s_omz} min_r ${s_rmin} max_r ${s_rmax} mean_vz ${s_vz} pair_contacts ${s_pairs} wall_contacts "
                  "${s_wall}\"\n"
                  "thermo_style custom step atoms ke\n"
                  "thermo_modify lost error norm no\n",

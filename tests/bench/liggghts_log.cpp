@@ -24,6 +24,7 @@ FilmSummary parse_state(std::istringstream& in) {
   s.mean_speed = kv["mean_speed"];
   s.mean_omega_z = kv["mean_omega_z"];
   s.min_radius = kv["min_r"];
+  s.max_radius = kv["max_r"];
   s.mean_vz = kv["mean_vz"];
   s.pair_contacts = kv["pair_contacts"];
   s.wall_contacts = kv["wall_contacts"];
