@@ -107,7 +107,19 @@ DemCase read_dem_case(yaml::MapReader root) {
   c.run.duration = run.number("duration", 1.0, Range::positive(), "s");
   c.run.progress_interval = run.number("progress_interval", 0.0, Range::non_negative(), "s");
   c.run.flow_window_turns = run.number("flow_window_turns", 5.0, Range::positive(), "turns");
+  c.run.steady_tolerance = run.number("steady_tolerance", 0.05, Range::open_closed(0.0, 1.0));
   run.finish();
+
+  auto samp = root.child("sampling");
+  c.sampling.turns = samp.number("turns", 0.0, Range::closed(0.0, 1e6), "turns");
+  auto& sp = c.sampling.sampler;
+  sp.snapshots_per_turn = static_cast<int>(samp.integer("snapshots_per_turn", sp.snapshots_per_turn, 1, 1000));
+  sp.axial_sections = static_cast<int>(samp.integer("axial_sections", sp.axial_sections, 1, 1000));
+  sp.tangential_bins = static_cast<int>(samp.integer("tangential_bins", sp.tangential_bins, 4, 3600));
+  sp.bin_width_d = samp.number("bin_width_d", sp.bin_width_d, Range::closed(0.05, 5.0));
+  sp.bins = static_cast<int>(samp.integer("bins", sp.bins, 1, 1000));
+  sp.zone_threshold = samp.number("zone_threshold", sp.zone_threshold, Range::open_closed(0.0, 1.0));
+  samp.finish();
 
   root.finish();
   return c;

@@ -1,0 +1,160 @@
+#include "dem/scene/scene_sampler.hpp"
+
+#include <cmath>
+#include <numeric>
+
+namespace centrec::dem::scene {
+
+film::ParticleArrays SnapshotArrays::view() const {
+  film::ParticleArrays p;
+  p.count = x.size();
+  p.x = x.data();
+  p.y = y.data();
+  p.z = z.data();
+  p.vx = vx.data();
+  p.vy = vy.data();
+  p.vz = vz.data();
+  p.radius = r.data();
+  p.id = id.data();
+  p.time = time;
+  return p;
+}
+
+SnapshotArrays take_snapshot(const Simulation& sim) {
+  SnapshotArrays s;
+  s.time = sim.time();
+  const std::size_t n = sim.size();
+  for (auto* v : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.r}) v->reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (sim.motions()[i] != Motion::free) continue;  // the glued layer is wall, not film
+    const Vec3 x = sim.positions()[i], v = sim.velocities()[i];
+    s.x.push_back(x.x);
+    s.y.push_back(x.y);
+    s.z.push_back(x.z);
+    s.vx.push_back(v.x);
+    s.vy.push_back(v.y);
+    s.vz.push_back(v.z);
+    s.r.push_back(sim.radii()[i]);
+    s.id.push_back(sim.ids()[i]);
+  }
+  return s;
+}
+
+SceneSampler::SceneSampler(const CentrecScene& scene, const SamplingSpec& spec) : spec_(spec) {
+  const SceneConfig& c = scene.config();
+  const bool slice = c.slice.enabled;
+  const double length = slice ? c.slice.length : c.drum.length;
+  const Vec3 g = scene.simulation().config().gravity;
+  frame_ = film::DrumFrame::from_gravity(scene.drum_radius(), length, g.x, g.y, c.drum.omega);
+  const double d = c.particle.diameter;
+
+  grid_.axial_sections = slice ? 1 : spec.axial_sections;
+  grid_.tangential_bins = spec.tangential_bins;
+  grid_.particle_diameter = d;
+  grid_.z_max = length;
+
+  film::WallDistanceBins bins;
+  bins.width_d = spec.bin_width_d;
+  bins.count = spec.bins;
+  bins.particle_diameter = d;
+
+  film::VelocityProfileConfig vc;
+  vc.bins = bins;
+  if (slice) {  // a slice is one axial position: the three arcs over its whole period
+    vc.sections = {{45 * M_PI / 180, 0.5}, {90 * M_PI / 180, 0.5}, {135 * M_PI / 180, 0.5}};
+    vc.axial_half_length = 0.5;
+  }
+  velocity_ = std::make_unique<film::VelocityProfileSampler>(frame_, vc);
+
+  film::SolidFractionConfig sc;
+  sc.bins = bins;
+  sc.zone_of_bin.resize(static_cast<std::size_t>(spec.tangential_bins));
+  std::iota(sc.zone_of_bin.begin(), sc.zone_of_bin.end(), 0);
+  sc.z_max = length;
+  if (!slice) {  // away from the feeder and the outlet
+    sc.z_min = 0.2 * length;
+    sc.z_max = 0.8 * length;
+  }
+  solid_ = std::make_unique<film::SolidFractionSampler>(frame_, sc);
+  dispersion_ = std::make_unique<film::DispersionEstimator>(frame_, bins);
+}
+
+void SceneSampler::snapshot(const CentrecScene& scene) {
+  SnapshotArrays s = take_snapshot(scene.simulation());
+  const film::ParticleArrays p = s.view();
+  thickness_.add(film::sample_film_sections(p, frame_, grid_));
+  velocity_->add_snapshot(p);
+  solid_->add_snapshot(p);
+  if (previous_) dispersion_->add_pair(previous_->view(), p);
+  previous_ = std::move(s);
+  ++snapshots_;
+}
+
+void SceneSampler::sample_turns(CentrecScene& scene, double turns) {
+  const double period = scene.turn_period();
+  const double interval = period / spec_.snapshots_per_turn;
+  const int whole = static_cast<int>(std::floor(turns + 1e-9));
+  for (int t = 0; t < whole; ++t) {
+    for (int k = 0; k < spec_.snapshots_per_turn; ++k) {
+      scene.advance(interval);
+      snapshot(scene);
+    }
+    velocity_->end_period();
+    solid_->end_period();
+    ++turns_;
+  }
+}
+
+FilmFields SceneSampler::fields() const {
+  FilmFields f;
+  f.turns = turns_;
+  f.snapshots = snapshots_;
+  if (snapshots_ == 0) return f;
+  f.mean_thickness = thickness_.overall();
+  const int na = thickness_.axial_sections(), nt = thickness_.tangential_bins();
+  const double z0 = grid_.z_min, z1 = grid_.z_max;
+  for (int a = 0; a < na; ++a) {
+    f.section_z.push_back(z0 + (a + 0.5) * (z1 - z0) / na);
+    f.section_thickness.push_back(thickness_.ring(a));
+  }
+  for (int b = 0; b < nt; ++b) f.bin_theta.push_back((b + 0.5) * 2.0 * M_PI / nt);
+  // Zones from the surface velocity over the sampled sections (away from inlet/outlet).
+  const int lo = na > 4 ? na / 5 : 0, hi = na > 4 ? na - na / 5 : na;
+  f.surface_velocity = thickness_.surface_velocity(lo, hi);
+  f.zones = film::detect_zones(f.surface_velocity.data(), f.surface_velocity.size(), spec_.zone_threshold);
+
+  f.arcs = velocity_->config().sections;
+  for (std::size_t s = 0; s < f.arcs.size(); ++s) f.velocity_profiles.push_back(velocity_->profile(static_cast<int>(s)));
+  for (int k = 0; k < spec_.bins; ++k) f.bin_centre_d.push_back(velocity_->config().bins.centre_d(k));
+
+  // Solid fraction by zone: average the per-tangential-bin profiles of each zone
+  // (equal bin angles, so a plain mean); the std is that of the bins' turn-to-turn std.
+  f.solid_fraction.assign(2, std::vector<film::ProfileBin>(static_cast<std::size_t>(spec_.bins)));
+  for (int zone = 0; zone < 2; ++zone) {
+    for (int k = 0; k < spec_.bins; ++k) {
+      double sum = 0.0, var = 0.0;
+      std::size_t n = 0, samples = 0, periods = 0;
+      for (int b = 0; b < nt; ++b) {
+        const int z = f.zones.zone_of_bin.empty() ? 0 : f.zones.zone_of_bin[static_cast<std::size_t>(b)];
+        if (z != zone) continue;
+        const film::ProfileBin pb = solid_->profile(b)[static_cast<std::size_t>(k)];
+        if (!(pb.periods > 0) || !std::isfinite(pb.mean)) continue;
+        sum += pb.mean;
+        var += pb.stddev * pb.stddev;
+        samples += pb.samples;
+        periods = std::max(periods, pb.periods);
+        ++n;
+      }
+      film::ProfileBin& out = f.solid_fraction[static_cast<std::size_t>(zone)][static_cast<std::size_t>(k)];
+      out.mean = n ? sum / n : std::nan("");
+      out.stddev = n ? std::sqrt(var / n) : std::nan("");
+      out.samples = samples;
+      out.periods = periods;
+    }
+  }
+  f.dispersion = dispersion_->result();
+  f.dispersion_lag = dispersion_->lag();
+  return f;
+}
+
+}  // namespace centrec::dem::scene

@@ -1,0 +1,73 @@
+#pragma once
+// Runs the paper's film samplers (dem/film, DESIGN.md section 5) on a CentRec scene:
+// snapshots several times per turn, a period per turn, then reduces everything to the
+// averaged film fields with their standard deviations over turns.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "dem/film/dispersion.hpp"
+#include "dem/film/film_sections.hpp"
+#include "dem/film/solid_fraction.hpp"
+#include "dem/film/velocity_profile.hpp"
+#include "dem/film/zone_boundaries.hpp"
+#include "dem/scene/centrec_scene.hpp"
+
+namespace centrec::dem::scene {
+
+struct SamplingSpec {
+  int snapshots_per_turn = 8;
+  int axial_sections = 20;
+  int tangential_bins = 36;
+  double bin_width_d = 0.5;   // wall-distance bins, in d
+  int bins = 16;
+  double zone_threshold = 0.1;  // moving zone: surface axial velocity above this x max
+};
+
+// One snapshot of the free particles in the sampler's SoA layout (copied from the engine).
+struct SnapshotArrays {
+  std::vector<double> x, y, z, vx, vy, vz, r;
+  std::vector<std::int64_t> id;
+  double time = 0.0;
+  film::ParticleArrays view() const;
+};
+SnapshotArrays take_snapshot(const Simulation& sim);
+
+struct FilmFields {
+  std::size_t turns = 0, snapshots = 0;
+  film::LengthStat mean_thickness;                    // whole film
+  std::vector<double> section_z;                      // m, axial section centres
+  std::vector<film::LengthStat> section_thickness;    // per axial section
+  std::vector<double> bin_theta;                      // rad, tangential bin centres
+  std::vector<double> surface_velocity;               // per tangential bin, m/s
+  film::ZoneDetection zones;
+  std::vector<film::ArcSection> arcs;
+  std::vector<std::vector<film::ProfileBin>> velocity_profiles;  // [arc][bin] m/s
+  std::vector<double> bin_centre_d;                              // wall distance, d
+  std::vector<std::vector<film::ProfileBin>> solid_fraction;     // [0 stationary, 1 moving][bin]
+  std::vector<film::DispersionBin> dispersion;                   // per wall-distance bin
+  double dispersion_lag = 0.0;                                   // s
+};
+
+class SceneSampler {
+ public:
+  SceneSampler(const CentrecScene& scene, const SamplingSpec& spec);
+  // Advances the scene by `turns` drum turns, sampling as it goes.
+  void sample_turns(CentrecScene& scene, double turns);
+  FilmFields fields() const;
+  const film::DrumFrame& frame() const { return frame_; }
+
+ private:
+  void snapshot(const CentrecScene& scene);
+  SamplingSpec spec_;
+  film::DrumFrame frame_;
+  film::FilmSectionGrid grid_;
+  film::FilmThicknessAccumulator thickness_;
+  std::unique_ptr<film::VelocityProfileSampler> velocity_;
+  std::unique_ptr<film::SolidFractionSampler> solid_;  // one zone per tangential bin
+  std::unique_ptr<film::DispersionEstimator> dispersion_;
+  std::optional<SnapshotArrays> previous_;
+  std::size_t turns_ = 0, snapshots_ = 0;
+};
+
+}  // namespace centrec::dem::scene
