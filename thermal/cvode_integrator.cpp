@@ -16,10 +16,15 @@ namespace centrec::thermal {
 void IntegratorSettings::check() const {
   // Below ~100 machine epsilons the BDF error test can never pass: refuse up front.
   const double floor = 100.0 * std::numeric_limits<double>::epsilon();
-  if (!(rtol >= floor && rtol <= 0.1))
-    throw std::invalid_argument("relative tolerance " + std::to_string(rtol) + " outside [2.2e-14, 0.1]");
-  if (!(atol > 0.0 && atol <= 100.0))
-    throw std::invalid_argument("absolute tolerance " + std::to_string(atol) + " K outside (0, 100]");
+  char buf[160];
+  if (!(rtol >= floor && rtol <= 0.1)) {
+    std::snprintf(buf, sizeof buf, "relative tolerance %g outside [%.2g, 0.1] (double precision limit)", rtol, floor);
+    throw std::invalid_argument(buf);
+  }
+  if (!(atol > 0.0 && atol <= 100.0)) {
+    std::snprintf(buf, sizeof buf, "absolute tolerance %g K outside (0, 100]", atol);
+    throw std::invalid_argument(buf);
+  }
   if (max_steps < 1) throw std::invalid_argument("max_steps must be >= 1");
   if (max_order < 1 || max_order > 5) throw std::invalid_argument("BDF max_order must be in [1, 5]");
 }
