@@ -17,6 +17,26 @@ ReceiverOperatingPoint scale_to_diameter(const ReceiverOperatingPoint& a, double
   return s;
 }
 
+double inlet_speed(const ReceiverOperatingPoint& op) { return op.omega * 0.5 * op.diameter; }
+
+double centrifugal_ratio(const ReceiverOperatingPoint& op, double gravity) {
+  return op.omega * op.omega * 0.5 * op.diameter / gravity;
+}
+
+double film_particle_count(const ReceiverOperatingPoint& op, double t, double phi, double d) {
+  const double R = 0.5 * op.diameter;
+  if (!(t > 0.0 && t < R) || !(phi > 0.0 && phi < 1.0) || !(d > 0.0))
+    throw std::invalid_argument("film_particle_count: need 0 < t < R, 0 < phi < 1, d > 0");
+  return phi * M_PI * (R * R - (R - t) * (R - t)) * op.length / (M_PI * d * d * d / 6.0);
+}
+
+double scale_particle_count(double n_actual, double actual_diameter, double target_diameter) {
+  if (!(actual_diameter > 0.0) || !(target_diameter > 0.0))
+    throw std::invalid_argument("scale_particle_count: diameters must be positive");
+  const double ratio = target_diameter / actual_diameter;
+  return n_actual * ratio * ratio;
+}
+
 double rpm_to_rad_per_s(double rpm) { return rpm * 2.0 * M_PI / 60.0; }
 double rad_per_s_to_rpm(double omega) { return omega * 60.0 / (2.0 * M_PI); }
 

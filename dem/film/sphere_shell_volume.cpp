@@ -42,15 +42,29 @@ const GaussLegendre& gauss() {
 }
 }  // namespace
 
+namespace {
+// Area of the segment of a circle of radius r cut off by a chord at height h (0..2r)
+// from the rim: r^2/2 (x - sin x) with x = 2 alpha, alpha = 2 asin(sqrt(h / 2r)) the half
+// angle. Written so that a thin segment of a huge circle (the drum wall against a
+// particle, D/d up to thousands) keeps full precision: no acos near 1, a series for x - sin x.
+double segment_area(double r, double h) {
+  h = std::clamp(h, 0.0, 2.0 * r);
+  const double x = 4.0 * std::asin(std::sqrt(h / (2.0 * r)));
+  const double x2 = x * x;
+  const double x_minus_sin = x < 1e-2 ? x * x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0)) : x - std::sin(x);
+  return 0.5 * r * r * x_minus_sin;
+}
+}  // namespace
+
 double disk_in_circle_area(double rho, double s, double c) {
   if (s <= 0.0 || rho <= 0.0) return 0.0;
   if (c >= rho + s) return 0.0;                                // apart
   if (c <= std::fabs(rho - s)) return M_PI * std::min(rho, s) * std::min(rho, s);  // one inside the other
-  // Lens of two overlapping circles at centre distance c.
-  const double a1 = std::clamp((c * c + rho * rho - s * s) / (2.0 * c * rho), -1.0, 1.0);
-  const double a2 = std::clamp((c * c + s * s - rho * rho) / (2.0 * c * s), -1.0, 1.0);
-  const double k = std::max(0.0, (-c + rho + s) * (c + rho - s) * (c - rho + s) * (c + rho + s));
-  return rho * rho * std::acos(a1) + s * s * std::acos(a2) - 0.5 * std::sqrt(k);
+  // Lens = segment of the circle beyond the common chord + segment of the disk before it.
+  // Heights from the chord, in factored form (no cancellation of large squares):
+  const double h_circle = (s - (c - rho)) * (s + (c - rho)) / (2.0 * c);
+  const double h_disk = (rho - c + s) * (rho + c - s) / (2.0 * c);
+  return segment_area(rho, h_circle) + segment_area(s, h_disk);
 }
 
 double sphere_in_cylinder_volume(double rho, double a, double c) {

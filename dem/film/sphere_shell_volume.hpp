@@ -7,7 +7,7 @@
 // inside the circle of radius rho is the circle-circle lens area, in closed form. The
 // slice areas are integrated over zeta by 24-point Gauss-Legendre quadrature on each
 // stretch between the zeta where the lens changes form (disk tangent to the circle), so
-// the integrand is smooth on each stretch. Accuracy: ~1e-7 of the sphere volume
+// the integrand is smooth on each stretch. Accuracy: better than 1e-6 of the sphere volume
 // (tests/film/test_sphere_shell_volume.cpp checks it against the flat-wall cap formula
 // and Monte Carlo). Curvature of the wall is kept; nothing assumes D >> d.
 namespace centrec::film {

@@ -7,6 +7,21 @@
 
 namespace centrec::film::test {
 
+DrumFrame paper_view_frame(double R, double L) {
+  DrumFrame f;
+  f.radius = R;
+  f.length = L;
+  return f;
+}
+
+FilmSectionGrid section_grid(int axial_sections, int tangential_bins, double d) {
+  FilmSectionGrid g;
+  g.axial_sections = axial_sections;
+  g.tangential_bins = tangential_bins;
+  g.particle_diameter = d;
+  return g;
+}
+
 void Particles::add(double px, double py, double pz, double r) {
   x.push_back(px);
   y.push_back(py);

@@ -6,9 +6,18 @@
 #include <random>
 #include <vector>
 
+#include "dem/film/drum_frame.hpp"
+#include "dem/film/film_sections.hpp"
 #include "dem/film/particle_arrays.hpp"
 
 namespace centrec::film::test {
+
+// The default theta convention (gravity along -y, clockwise rotation seen from +z:
+// theta = atan2(y, x)) for a drum of radius R and length L.
+DrumFrame paper_view_frame(double R, double L);
+
+// Film-section grid over the whole drum with a fixed particle diameter d.
+FilmSectionGrid section_grid(int axial_sections, int tangential_bins, double d);
 
 struct Particles {
   std::vector<double> x, y, z, vx, vy, vz, radius;

@@ -156,9 +156,7 @@ TEST(FilmThickness, PolydisperseUsesMeanDiameter) {
   FilmSectionGrid g;  // d = 0: the sampler takes the mean diameter
   g.axial_sections = 1;
   g.tangential_bins = 1;
-  DrumFrame f;
-  f.radius = R;
-  f.length = Lsec;
+  const DrumFrame f = paper_view_frame(R, Lsec);
   const FilmSectionSnapshot s = sample_film_sections(p.view(), f, g);
   const double expect = predicted_layered(count, w, eq5(s.ring_thickness[0], dmean), dmean);
   EXPECT_NEAR(s.particle_diameter, dmean, 1e-12);
@@ -174,13 +172,8 @@ TEST(FilmThickness, TangentialBinsAndAccumulator) {
   // rotated against each other so cells see different particles.
   const double L = 4 * Lsec;
   Particles p = layered_lattice(R, L, d, 4, d, d, d, false);
-  DrumFrame f;
-  f.radius = R;
-  f.length = L;
-  FilmSectionGrid g;
-  g.axial_sections = 4;
-  g.tangential_bins = 12;
-  g.particle_diameter = d;
+  const DrumFrame f = paper_view_frame(R, L);
+  const FilmSectionGrid g = section_grid(4, 12, d);
   FilmThicknessAccumulator acc;
   for (int snap = 0; snap < 3; ++snap) {
     const double rot = 0.013 * snap;
