@@ -1,0 +1,33 @@
+#pragma once
+// The thermal case: YAML -> typed thermal config structs (DESIGN.md sections 2, 9). Top-level
+// keys `title`, `film` ({analytic: ...} or {file: ..., group: ...}) and `thermal`. Every key
+// is checked for type and range by the strict reader; relations between keys (thickness
+// above one particle diameter, ...) are refused with the key path and line.
+#include <string>
+
+#include "strict_yaml.hpp"
+#include "thermal/film_field.hpp"
+#include "thermal/film_model.hpp"
+#include "thermal/steady_state.hpp"
+#include "thermal/transient_run.hpp"
+
+namespace centrec::cli {
+
+struct ThermalCase {
+  std::string path, title;
+  thermal::FilmField film;
+  std::string film_source;  // "analytic" or the HDF5 file it was read from
+  thermal::FilmModel model;
+  thermal::FilmGridSpec grid;
+  thermal::SteadySettings steady;
+  bool transient = false;
+  thermal::TransientSettings transient_settings;
+  std::string resolved_yaml;
+};
+
+// Reads the sections `film` and `thermal` from a root reader (shared by other case readers).
+void read_thermal_sections(yaml::MapReader& root, const std::string& case_dir, ThermalCase& c);
+// Reads a whole thermal case file; throws yaml::ConfigError on the first problem.
+ThermalCase read_thermal_case(const std::string& path);
+
+}  // namespace centrec::cli

@@ -1,0 +1,10 @@
+#pragma once
+// Writes a summary.json atomically (temporary name, then rename; DESIGN.md section 7).
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace centrec::io {
+
+void write_json_file(const std::string& path, const nlohmann::json& j);
+
+}  // namespace centrec::io

@@ -1,0 +1,16 @@
+#pragma once
+// Outputs of `centrec thermal` (DESIGN.md sections 7, 9): DIR/thermal.h5 (fields with units
+// attributes, the resolved configuration and the code version as root attributes) and the
+// headline figures as JSON for DIR/summary.json.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "case_thermal.hpp"
+#include "thermal_case_run.hpp"
+
+namespace centrec::cli {
+
+void write_thermal_h5(const std::string& path, const ThermalCase& c, const ThermalRun& r);
+nlohmann::json thermal_summary(const ThermalCase& c, const ThermalRun& r);
+
+}  // namespace centrec::cli
