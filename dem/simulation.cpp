@@ -376,9 +376,11 @@ void Simulation::report_blow_up(std::size_t i, double overlap, const std::string
     if (id_[i] >= first && step_ - s <= 20) recent = true;
   msg << ". Likely cause: ";
   if (recent) msg << "particles inserted overlapping (this particle was inserted within the last 20 steps); ";
-  msg << "dt = " << dt_ << " s too large for the contact stiffness (advised " << time_step_advice().recommended
-      << " s), Young's modulus too high for this dt, or impacts faster than max_impact_speed = "
-      << cfg_.max_impact_speed << " m/s";
+  const TimeStepAdvice advice = time_step_advice();
+  if (dt_ > advice.recommended)
+    msg << "dt = " << dt_ << " s larger than the advised " << advice.recommended << " s; ";
+  msg << "Young's modulus too high for dt = " << dt_ << " s, or impacts faster than max_impact_speed = "
+      << cfg_.max_impact_speed << " m/s (Hertz contact time there " << advice.hertz_time << " s)";
   throw BlowUpError(msg.str());
 }
 
