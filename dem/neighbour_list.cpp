@@ -8,8 +8,8 @@
 namespace centrec::dem {
 
 std::size_t NeighbourList::bytes() const {
-  return start.capacity() * sizeof(std::uint32_t) + nbr.capacity() * sizeof(std::int32_t) +
-         hist.capacity() * sizeof(ContactHistory);
+  return (start.capacity() + rev_start.capacity() + rev_entry.capacity()) * sizeof(std::uint32_t) +
+         nbr.capacity() * sizeof(std::int32_t) + hist.capacity() * sizeof(ContactHistory);
 }
 
 NeighbourList carry_contacts(const NeighbourList& old, const std::vector<std::int32_t>& order,
@@ -111,19 +111,35 @@ inline void for_each_near(const CellGrid& g, long ix, long iy, long iz, F&& f) {
 
 }  // namespace
 
+namespace {
+
+// History of pair (i, j) in `carried`, which may hold it in row i or in row j.
+const ContactHistory* find_carried(const NeighbourList& carried, std::int32_t i, std::int32_t j) {
+  auto search = [&](std::int32_t row, std::int32_t partner) -> const ContactHistory* {
+    if (static_cast<std::size_t>(row) >= carried.rows()) return nullptr;
+    for (std::uint32_t e = carried.start[row]; e < carried.start[row + 1]; ++e)
+      if (carried.nbr[e] == partner) return &carried.hist[e];
+    return nullptr;
+  };
+  const ContactHistory* h = search(i, j);
+  return h ? h : search(j, i);
+}
+
+}  // namespace
+
 void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
                           const PeriodicZ& pz, const NeighbourList& carried, int threads) {
   const long n = static_cast<long>(x.size());
   std::vector<std::uint32_t> count(static_cast<std::size_t>(n) + 1, 0);
   auto scan = [&](long i, auto&& emit) {
-    if (motion[i] != Motion::free) return;
     const Vec3 xi = x[i];
     const double ri = r[i];
+    const bool i_free = motion[i] == Motion::free;
     const long c = g.cell_of(xi);
     const long ix = c % g.nx, iy = (c / g.nx) % g.ny, iz = c / (static_cast<long>(g.nx) * g.ny);
     for_each_near(g, ix, iy, iz, [&](std::int32_t j) {
-      if (j == i) return;
+      if (j <= i || (!i_free && motion[j] != Motion::free)) return;
       Vec3 d = xi - x[j];
       d.z = pz.image(d.z);
       const double cut = ri + r[j] + skin;
@@ -143,18 +159,18 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
 #pragma omp parallel for schedule(static) num_threads(threads) if (n >= kMinParallelParticles)
   for (long i = 0; i < n; ++i) {
     std::uint32_t k = out.start[i];
-    scan(i, [&](std::int32_t j) { out.nbr[k++] = j; });
-    if (static_cast<std::size_t>(i) >= carried.rows()) continue;
-    // Carry histories over, matched by partner (rows are short: a linear search is fastest).
-    for (std::uint32_t e = carried.start[i]; e < carried.start[i + 1]; ++e) {
-      for (std::uint32_t q = out.start[i]; q < out.start[i + 1]; ++q) {
-        if (out.nbr[q] == carried.nbr[e]) {
-          out.hist[q] = carried.hist[e];
-          break;
-        }
-      }
-    }
+    scan(i, [&](std::int32_t j) {
+      if (const ContactHistory* h = find_carried(carried, static_cast<std::int32_t>(i), j)) out.hist[k] = *h;
+      out.nbr[k++] = j;
+    });
   }
+  // Reverse index, in increasing entry order (a stable counting sort by partner).
+  out.rev_start.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (std::int32_t j : out.nbr) ++out.rev_start[static_cast<std::size_t>(j) + 1];
+  for (long j = 0; j < n; ++j) out.rev_start[j + 1] += out.rev_start[j];
+  out.rev_entry.resize(out.nbr.size());
+  std::vector<std::uint32_t> fill(out.rev_start.begin(), out.rev_start.end() - 1);
+  for (std::uint32_t e = 0; e < out.nbr.size(); ++e) out.rev_entry[fill[static_cast<std::size_t>(out.nbr[e])]++] = e;
 }
 
 }  // namespace centrec::dem

@@ -1,8 +1,11 @@
 #pragma once
-// Cell grid, spatial sort and full Verlet neighbour lists with contact history
-// (DESIGN.md section 3). The list is "full": pair (i, j) appears in row i and in row j,
-// each row carrying its own (bitwise identical) copy of the pair's history, so a thread
-// writes only the rows of its own particles.
+// Cell grid, spatial sort and half Verlet neighbour lists with contact history
+// (DESIGN.md section 3). Pair (i, j), i < j by index, is stored once, in row i, with its
+// history; the reverse index (rev_start/rev_entry) lists for each j the entries naming it,
+// in increasing entry order, so forces on j can be gathered in a fixed order (bitwise
+// determinism for any thread count) instead of scattered with atomics.
+// History is kept in the pair's canonical orientation (lower particle id = "i" of the
+// contact law), so re-sorting never flips it.
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +24,8 @@ struct NeighbourList {
   std::vector<std::uint32_t> start;  // rows + 1 offsets into nbr/hist
   std::vector<std::int32_t> nbr;     // partner index
   std::vector<ContactHistory> hist;  // history of the pair (zero = not in contact)
+  std::vector<std::uint32_t> rev_start;  // rows + 1 offsets into rev_entry
+  std::vector<std::uint32_t> rev_entry;  // entries e with nbr[e] == j, grouped by j
   std::size_t rows() const { return start.empty() ? 0 : start.size() - 1; }
   std::size_t bytes() const;
 };
@@ -50,10 +55,10 @@ struct CellGrid {
 std::vector<std::int32_t> sort_into_cells(CellGrid& grid, const std::vector<Vec3>& x, double cutoff,
                                           const PeriodicZ& pz);
 
-// Full list of particles already in cell order: j is a neighbour of i when
-// |x_i - x_j| < r_i + r_j + skin. Rows of particles that are not Motion::free stay empty
-// (nothing is computed for them; their free partners hold the pair).
-// Histories are taken from `carried` (same numbering), others start at zero.
+// Half list of particles already in cell order: row i holds j > i with
+// |x_i - x_j| < r_i + r_j + skin, unless neither is Motion::free (nothing to compute).
+// Histories are taken from `carried` (same numbering; a pair may sit in either of its two
+// rows there), others start at zero. Also builds the reverse index.
 void build_neighbour_list(NeighbourList& out, const CellGrid& grid, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
                           const PeriodicZ& pz, const NeighbourList& carried, int threads);

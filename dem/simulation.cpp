@@ -80,6 +80,9 @@ struct Simulation::Impl {
   std::vector<ContactHistory> wall_hist;    // N x walls
   std::vector<std::uint32_t> wall_mask;     // candidate walls per particle
   std::vector<BlockTally> tallies;
+  // Per list entry, written in force pass 1 and gathered in pass 2.
+  std::vector<std::uint8_t> touch;  // in contact this step
+  std::vector<Vec3> j_force, j_torque;  // the partner's share of force and torque
   std::size_t rebuilds = 0, pair_contacts = 0, wall_contacts = 0;
 };
 
@@ -434,6 +437,12 @@ void Simulation::compute_forces(bool update_history) {
   const long nblocks = (n + kBlock - 1) / kBlock;
   const std::size_t nw = walls_.size();
   if (im.tallies.size() < static_cast<std::size_t>(nblocks)) im.tallies.resize(static_cast<std::size_t>(nblocks));
+  const std::size_t entries = im.list.nbr.size();
+  if (im.touch.size() < entries) {
+    im.touch.resize(entries);
+    im.j_force.resize(entries);
+    im.j_torque.resize(entries);
+  }
   const double dt = dt_;
   const double limit = blowup_fraction_;
   const bool relative_rolling = cfg_.wall_rolling == WallRolling::relative;
@@ -443,12 +452,17 @@ void Simulation::compute_forces(bool update_history) {
   const std::int32_t* nbr = im.list.nbr.data();
   ContactHistory* hist = im.list.hist.data();
   ContactHistory* whist = im.wall_hist.data();
+  std::uint8_t* touch = im.touch.data();
+  Vec3* j_force = im.j_force.data();
+  Vec3* j_torque = im.j_torque.data();
   const Vec3 *X = x_.data(), *V = v_.data(), *Wv = w_.data();
   const double *R = r_.data(), *M = m_.data();
   const std::int64_t* ID = id_.data();
   const int* MAT = mat_.data();
   const Motion* MOT = motion_.data();
 
+  // Pass 1: each pair once, in the row of its lower index. The row owner's share is summed
+  // at once; the partner's share is parked per entry for pass 2.
 #pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
   for (long b = 0; b < nblocks; ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
@@ -457,11 +471,6 @@ void Simulation::compute_forces(bool update_history) {
     tally.blowup_index = -1;
     const long i_end = std::min(n, (b + 1) * kBlock);
     for (long i = b * kBlock; i < i_end; ++i) {
-      if (MOT[i] != Motion::free) {
-        f_[i] = {};
-        t_[i] = {};
-        continue;
-      }
       const Vec3 xi = X[i];
       const double ri = R[i];
       const std::int64_t idi = ID[i];
@@ -473,6 +482,7 @@ void Simulation::compute_forces(bool update_history) {
         const double rsum = ri + R[j];
         const double dist2 = norm2(d);
         if (dist2 >= rsum * rsum) {
+          touch[e] = 0;
           if (!is_zero(hist[e])) hist[e] = ContactHistory{};  // separated: forget the pair
           continue;
         }
@@ -483,15 +493,16 @@ void Simulation::compute_forces(bool update_history) {
           tally.blowup_overlap = delta;
           tally.blowup_partner = "particle id " + std::to_string(ID[j]);
         }
-        // Canonical operand order (lower id first): both rows compute identical bits.
+        // Canonical operand order (lower id first): the result and the stored history do
+        // not depend on which of the two is the row owner after a re-sort.
         const bool i_first = idi < ID[j];
         const long a = i_first ? i : j, c = i_first ? j : i;
         const double ra = R[a], rc = R[c], ma = M[a], mc = M[c];
-        const Vec3 n = (1.0 / dist) * (i_first ? d : -d);
+        const Vec3 nrm = (1.0 / dist) * (i_first ? d : -d);
         const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
         const ContactInput in{delta,
-                              n,
-                              contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, n),
+                              nrm,
+                              contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, nrm),
                               Wv[a] - Wv[c],
                               ra * rc / (ra + rc),
                               ma * mc / (ma + mc),
@@ -502,11 +513,21 @@ void Simulation::compute_forces(bool update_history) {
         if (i_first) {
           F += res.force;
           T += res.torque_i;
+          j_force[e] = -res.force;
+          j_torque[e] = res.torque_j;
         } else {
           F -= res.force;
           T += res.torque_j;
+          j_force[e] = res.force;
+          j_torque[e] = res.torque_i;
         }
-        if (i_first || MOT[j] != Motion::free) ++tally.pair_contacts;
+        touch[e] = 1;
+        ++tally.pair_contacts;
+      }
+      if (MOT[i] != Motion::free) {  // carried by the drum: forces on it are not needed
+        f_[i] = {};
+        t_[i] = {};
+        continue;
       }
       std::uint32_t mask = im.wall_mask[i];
       while (mask != 0u) {
@@ -542,11 +563,31 @@ void Simulation::compute_forces(bool update_history) {
         tally.wall_force[static_cast<std::size_t>(wi)] -= res.force;
         ++tally.wall_contacts;
       }
-      F += M[i] * g;
-      f_[i] = F;
+      f_[i] = F + M[i] * g;
       t_[i] = T;
-      if ((!is_finite(F) || !is_finite(T) || !is_finite(xi)) && tally.blowup_index < 0) {
-        tally.blowup_index = i;
+    }
+  }
+  // Pass 2: gather the parked partner shares in the fixed reverse-index order.
+  const std::uint32_t* rev_start = im.list.rev_start.data();
+  const std::uint32_t* rev_entry = im.list.rev_entry.data();
+#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
+  for (long b = 0; b < nblocks; ++b) {
+    BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+    const long j_end = std::min(n, (b + 1) * kBlock);
+    for (long j = b * kBlock; j < j_end; ++j) {
+      if (MOT[j] != Motion::free) continue;
+      Vec3 F = f_[j], T = t_[j];
+      for (std::uint32_t k = rev_start[j]; k < rev_start[j + 1]; ++k) {
+        const std::uint32_t e = rev_entry[k];
+        if (touch[e]) {
+          F += j_force[e];
+          T += j_torque[e];
+        }
+      }
+      f_[j] = F;
+      t_[j] = T;
+      if ((!is_finite(F) || !is_finite(T) || !is_finite(X[j])) && tally.blowup_index < 0) {
+        tally.blowup_index = j;
         tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
       }
     }
@@ -595,6 +636,7 @@ std::size_t Simulation::memory_bytes() const {
                   bytes_of(r_) + bytes_of(m_) + bytes_of(inv_m_) + bytes_of(inv_inertia_) + bytes_of(mat_) +
                   bytes_of(motion_);
   b += im.list.bytes() + im.carried.bytes() + bytes_of(im.x_build) + bytes_of(im.wall_hist) + bytes_of(im.wall_mask) +
+       bytes_of(im.touch) + bytes_of(im.j_force) + bytes_of(im.j_torque) +
        bytes_of(im.grid.cell_start);
   for (const auto& t : im.tallies) b += sizeof(BlockTally) + bytes_of(t.wall_force);
   return b;

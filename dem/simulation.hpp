@@ -8,11 +8,12 @@
 // rebuild and compacted on removal, so an index is valid only until the next step() or
 // remove_particles(). ids() gives each particle's stable id (returned by add_particle).
 //
-// Determinism: forces use full neighbour lists; every pair is evaluated from both sides
-// with the same canonical operand order (lower id first), so the two evaluations are
-// bitwise identical (Newton's third law holds exactly) and each thread writes only its
-// own particles. Per-wall force totals are summed over fixed blocks of particles in a
-// fixed order. Results are therefore bitwise identical for any thread count.
+// Determinism: forces use a half neighbour list; each pair is evaluated once (Newton's
+// third law holds exactly) in a canonical operand order (lower id first). The row owner's
+// share is summed directly and the partner's share is gathered in a second pass in a fixed
+// order (a reverse index), so each thread writes only its own particles. Per-wall force
+// totals are summed over fixed blocks of particles in a fixed order. Results are therefore
+// bitwise identical for any thread count (tests/dem/test_thread_determinism.cpp).
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -63,7 +64,7 @@ struct ParticleInit {
 struct NeighbourStats {
   std::size_t pair_contacts = 0;     // particle pairs in contact after the last force pass
   std::size_t wall_contacts = 0;     // particle-wall contacts after the last force pass
-  std::size_t list_entries = 0;      // full neighbour-list entries (each pair twice)
+  std::size_t list_entries = 0;      // neighbour-list entries (each pair once)
   std::size_t rebuilds = 0;          // neighbour-list rebuilds (each also re-sorts)
   double skin = 0.0;                 // m
   std::size_t particles = 0;
