@@ -39,8 +39,8 @@ Particles layered_lattice(double R, double length, double d, int layers, double 
 
 // A random (fluid-like) packing of spheres of diameter d at solid fraction phi in the
 // annulus of thickness t (periodic in z over [0, length)): random centres, then overlap
-// relaxation (overlapping pairs pushed apart, centres held between the walls) until no
-// pair overlaps by more than 1e-9 d. Throws std::runtime_error if it does not converge.
+// relaxation (overlapping pairs pushed 1e-4 d past contact, centres held between the
+// walls) until a full pass finds no overlap. Throws std::runtime_error if it never does.
 Particles random_packing(double R, double t, double length, double d, double phi, std::mt19937_64& rng);
 
 // Smallest centre distance minus the sum of radii over all pairs (negative = overlap),
