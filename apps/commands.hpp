@@ -17,6 +17,7 @@ struct Command {
 int cmd_validate(const Args& args);
 int cmd_thermal(const Args& args);
 int cmd_dem(const Args& args);
+int cmd_scale(const Args& args);
 
 // The table `main` dispatches on; add new subcommands here.
 const std::vector<Command>& commands();
