@@ -197,6 +197,21 @@ TEST(FilmThickness, TangentialBinsAndAccumulator) {
   EXPECT_NEAR(all.mean_m, 4 * d, 0.05 * d);
 }
 
+TEST(FilmThickness, AccumulatorSpreadOverSnapshots) {
+  // Snapshots of 3- and 4-layer cubic films: mean 3.5 d, sample std sqrt(1/2) d.
+  const DrumFrame f = paper_view_frame(R, Lsec);
+  const FilmSectionGrid g = section_grid(1, 4, d);
+  FilmThicknessAccumulator acc;
+  for (int layers : {3, 4}) acc.add(sample_film_sections(layered_lattice(R, Lsec, d, layers, d, d, d, false).view(), f, g));
+  const LengthStat all = acc.overall(), cell = acc.cell(0, 2);
+  std::printf("3- and 4-layer snapshots: mean %.4f d std %.4f d (expect 3.5, %.4f); cell mean %.4f d in m %.4e\n",
+              all.mean_d, all.std_d, std::sqrt(0.5), cell.mean_d, cell.mean_m);
+  EXPECT_NEAR(all.mean_d, 3.5, 1e-9);
+  EXPECT_NEAR(all.std_d, std::sqrt(0.5), 1e-9);
+  EXPECT_NEAR(cell.mean_m, 3.5 * d, 1e-9 * d);
+  EXPECT_EQ(acc.snapshots(), 2u);
+}
+
 TEST(FilmThickness, EmptyAndThinSections) {
   FilmThicknessParams fp = params();
   FilmThicknessResult r = film_thickness(nullptr, 0, fp);

@@ -83,3 +83,30 @@ TEST(VelocityProfile, SectionsAndFit) {
   EXPECT_NEAR(fl.intercept, 1.0, 1e-12);
   EXPECT_THROW(fit_line(x, y, 4, 5, 6), std::invalid_argument);
 }
+
+TEST(VelocityProfile, StatisticsAreOverTurnsNotParticles) {
+  // Turn k puts (k + 1) particles at vz = k + 1 in one bin of the 45 deg, z/L = 0.3
+  // section: the mean over turns is 2.5 (not the particle-weighted 3), std sqrt(5/3).
+  const DrumFrame f = paper_view_frame(R, L);
+  VelocityProfileConfig c;
+  c.bins.particle_diameter = d;
+  VelocityProfileSampler s(f, c);
+  const double w = 2.2 * d, th = M_PI / 4;
+  for (int k = 0; k < 4; ++k) {
+    Particles p;
+    for (int i = 0; i <= k; ++i) {
+      p.add((R - w) * std::cos(th), (R - w) * std::sin(th), 0.3 * L, d / 2);
+      p.vz.back() = k + 1.0;
+    }
+    s.add_snapshot(p.view());
+    s.end_period();
+  }
+  const ProfileBin b = s.profile(0)[c.bins.index(w)];
+  std::printf("per-turn statistics: mean %.4f (expect 2.5), std %.4f (expect %.4f), %zu turns, %zu samples\n", b.mean,
+              b.stddev, std::sqrt(5.0 / 3.0), b.periods, b.samples);
+  EXPECT_NEAR(b.mean, 2.5, 1e-12);
+  EXPECT_NEAR(b.stddev, std::sqrt(5.0 / 3.0), 1e-12);
+  EXPECT_EQ(b.periods, 4u);
+  EXPECT_EQ(b.samples, 10u);
+  EXPECT_EQ(s.profile(1)[c.bins.index(w)].samples, 0u);  // 90 deg section saw nothing
+}
