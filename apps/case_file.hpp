@@ -6,6 +6,7 @@
 #include <string>
 
 #include "case_dem.hpp"
+#include "case_thermal.hpp"
 #include "strict_yaml.hpp"
 
 namespace centrec::cli {
@@ -14,6 +15,7 @@ struct CaseFile {
   std::string path;
   std::string title;
   std::optional<DemCase> dem;
+  std::optional<ThermalCase> thermal;  // `film` + `thermal` sections
   std::string resolved_yaml;  // the fully resolved configuration, echoed into outputs
 };
 
