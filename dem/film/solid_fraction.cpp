@@ -40,9 +40,14 @@ void SolidFractionSampler::add_snapshot(const ParticleArrays& p) {
     // Only the bins the sphere reaches: wall distances R - c - a .. R - c + a.
     const int k_lo = std::max(0, static_cast<int>(std::floor((R - c - a) / b.width_m())));
     const int k_hi = std::min(b.count - 1, static_cast<int>(std::floor((R - c + a) / b.width_m())));
-    for (int k = k_lo; k <= k_hi; ++k)
-      vol[static_cast<std::size_t>(zone) * b.count + k] +=
-          sphere_in_shell_volume(R - b.upper_m(k), R - b.lower_m(k), a, c);
+    // Bin k is the shell R - upper(k) < r <= R - lower(k); neighbours share a boundary,
+    // so each cylinder volume is computed once.
+    double v_outer = sphere_in_cylinder_volume(R - b.lower_m(k_lo), a, c);
+    for (int k = k_lo; k <= k_hi; ++k) {
+      const double v_inner = sphere_in_cylinder_volume(R - b.upper_m(k), a, c);
+      vol[static_cast<std::size_t>(zone) * b.count + k] += v_outer - v_inner;
+      v_outer = v_inner;
+    }
   }
   const double lz = config_.z_max - config_.z_min;
   for (int z = 0; z < n_zones_; ++z) {

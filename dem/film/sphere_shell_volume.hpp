@@ -5,9 +5,10 @@
 // Method: cut the sphere into slices normal to the drum axis. Each slice is a disk of
 // radius s = sqrt(a^2 - zeta^2) whose centre is a distance c from the axis; its area
 // inside the circle of radius rho is the circle-circle lens area, in closed form. The
-// slice areas are integrated over zeta by 24-point Gauss-Legendre quadrature on each
-// stretch between the zeta where the lens changes form (disk tangent to the circle), so
-// the integrand is smooth on each stretch. Accuracy: better than 1e-6 of the sphere volume
+// slice areas are integrated over zeta on each stretch between the zeta where the lens
+// changes form (disk tangent to the circle): in closed form where the slices lie wholly
+// inside or outside, else by 12-point Gauss-Legendre after a sine substitution that
+// smooths the tangency. Accuracy: better than 1e-6 of the sphere volume
 // (tests/film/test_sphere_shell_volume.cpp checks it against the flat-wall cap formula
 // and Monte Carlo). Curvature of the wall is kept; nothing assumes D >> d.
 namespace centrec::film {
