@@ -134,6 +134,8 @@ void read_solver(MapReader r, ThermalCase& c) {
   in.atol = r.number("atol", 1e-3, Range::closed(1e-10, 10.0), "K");
   in.max_steps = r.integer("max_steps", 50000, 10, 100000000);
   in.max_order = static_cast<int>(r.integer("max_order", 5, 1, 5));
+  in.linear_solver = r.choice("linear_solver", "band", {"band", "klu"}) == "klu" ? th::LinearSolver::klu
+                                                                                 : th::LinearSolver::band;
   c.steady.tolerance = r.number("steady_tolerance", 1e-10, Range::closed(1e-14, 1e-2));
   c.steady.newton_first = r.boolean("newton_first", true);
   c.steady.max_time_factor = r.number("max_time_scales", 1e4, Range::closed(1.0, 1e9));

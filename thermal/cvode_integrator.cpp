@@ -4,7 +4,9 @@
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_band.h>
+#include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_band.h>
+#include <sunmatrix/sunmatrix_sparse.h>
 
 #include <cmath>
 #include <cstdio>
@@ -84,9 +86,33 @@ int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* user) {
 
 int jac_fn(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
   auto* sys = static_cast<OdeSystem*>(user);
-  SUNMatZero(J);
-  const BandEntrySink sink = [J](long r, long c, double v) { SM_ELEMENT_B(J, r, c) = v; };
-  return sys->jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(fy), sink) ? 0 : 1;
+  const double* py = N_VGetArrayPointer(y);
+  const double* pf = N_VGetArrayPointer(fy);
+  if (SUNMatGetID(J) == SUNMATRIX_BAND) {
+    SUNMatZero(J);
+    const BandEntrySink sink = [J](long r, long c, double v) { SM_ELEMENT_B(J, r, c) = v; };
+    return sys->jacobian(t, py, pf, sink) ? 0 : 1;
+  }
+  // Compressed sparse columns, filled in one pass (entries arrive column by column).
+  sunindextype* colptr = SUNSparseMatrix_IndexPointers(J);
+  sunindextype* rowval = SUNSparseMatrix_IndexValues(J);
+  double* data = SUNSparseMatrix_Data(J);
+  const long n = sys->size(), capacity = SUNSparseMatrix_NNZ(J);
+  long nnz = 0, column = -1;
+  bool overflow = false;
+  const BandEntrySink sink = [&](long r, long c, double v) {
+    while (column < c) colptr[++column] = nnz;
+    if (nnz >= capacity) {
+      overflow = true;
+      return;
+    }
+    rowval[nnz] = r;
+    data[nnz++] = v;
+  };
+  if (!sys->jacobian(t, py, pf, sink) || overflow) return overflow ? -1 : 1;
+  while (column < n - 1) colptr[++column] = nnz;
+  colptr[n] = nnz;
+  return 0;
 }
 
 void err_fn(int code, const char* module, const char* function, char* msg, void* user) {
@@ -145,9 +171,16 @@ CvodeIntegrator::CvodeIntegrator(OdeSystem& system, const IntegratorSettings& s,
   check_flag(CVodeSStolerances(m.mem, s.rtol, s.atol), "CVodeSStolerances");
   check_flag(CVodeSetMaxNumSteps(m.mem, s.max_steps), "CVodeSetMaxNumSteps");
   check_flag(CVodeSetMaxOrd(m.mem, s.max_order), "CVodeSetMaxOrd");
-  m.A = SUNBandMatrix(n, system.upper_bandwidth(), system.lower_bandwidth(), m.ctx);
-  m.LS = SUNLinSol_Band(m.y, m.A, m.ctx);
-  if (!m.A || !m.LS) throw SolverError("CVODE: cannot allocate the band matrix/solver");
+  if (s.linear_solver == LinearSolver::klu) {
+    // Room for the whole band: the sparsity is at most that.
+    const long nnz = n * (system.lower_bandwidth() + system.upper_bandwidth() + 1);
+    m.A = SUNSparseMatrix(n, n, nnz, CSC_MAT, m.ctx);
+    m.LS = SUNLinSol_KLU(m.y, m.A, m.ctx);
+  } else {
+    m.A = SUNBandMatrix(n, system.upper_bandwidth(), system.lower_bandwidth(), m.ctx);
+    m.LS = SUNLinSol_Band(m.y, m.A, m.ctx);
+  }
+  if (!m.A || !m.LS) throw SolverError("CVODE: cannot allocate the Jacobian matrix/linear solver");
   check_flag(CVodeSetLinearSolver(m.mem, m.LS, m.A), "CVodeSetLinearSolver");
   check_flag(CVodeSetJacFn(m.mem, jac_fn), "CVodeSetJacFn");
 }

@@ -1,5 +1,5 @@
 #pragma once
-// SUNDIALS CVODE (BDF, Newton iteration, band direct linear solver) over an OdeSystem
+// SUNDIALS CVODE (BDF, Newton iteration, band or KLU sparse direct linear solver) over an OdeSystem
 // (DESIGN.md sections 9 and 11: the integrator knows nothing of films). Failures become
 // SolverError messages naming the time, the CVODE flag and a likely cause.
 #include <memory>
@@ -16,11 +16,14 @@ class SolverError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+enum class LinearSolver { band, klu };
+
 struct IntegratorSettings {
   double rtol = 1e-6;        // relative tolerance
   double atol = 1e-4;        // absolute tolerance on T, K
   long max_steps = 50000;    // per advance() call
   int max_order = 5;         // BDF order limit
+  LinearSolver linear_solver = LinearSolver::band;  // SUNDIALS band LU, or KLU sparse LU
   // Throws std::invalid_argument if a tolerance is outside what double precision supports.
   void check() const;
 };

@@ -204,6 +204,7 @@ bool FilmOperator::jacobian(double t, const double* y, const double*, const Band
     if (i > 0) rows[nr++] = static_cast<int>(l) - nxi;
     if (i + 1 < nz) rows[nr++] = static_cast<int>(l) + nxi;
     if (advection_ == Advection::van_leer && i + 2 < nz) rows[nr++] = static_cast<int>(l) + 2 * nxi;
+    std::sort(rows, rows + nr);  // the OdeSystem contract: rows increasing within a column
     const double Tl = T[l];
     const CellProps saved = props_[l];
     const double dT = 1.5e-8 * std::max(std::abs(Tl), 1.0);

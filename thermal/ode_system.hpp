@@ -18,7 +18,9 @@ class OdeSystem {
   // Returns false if y is outside the model's domain (non-finite or non-positive T): the
   // integrator then retries with a smaller step.
   virtual bool rhs(double t, const double* y, double* ydot) = 0;
-  // Writes every nonzero of the Jacobian at (t, y); fy = f(t, y) is given.
+  // Writes every nonzero of the Jacobian at (t, y); fy = f(t, y) is given. Entries must
+  // arrive column by column (columns increasing, rows increasing within a column, each
+  // (row, col) once) so that a sparse (CSC) matrix can be filled in one pass.
   virtual bool jacobian(double t, const double* y, const double* fy, const BandEntrySink& sink) = 0;
   // A dimensionless size of f(t, y) used to decide a steady state (1 = of the order of the
   // system's throughput); the steady solver stops when it falls below its tolerance.

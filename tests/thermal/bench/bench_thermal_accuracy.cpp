@@ -104,8 +104,8 @@ int main(int argc, char** argv) {
     }
     for (double tol : {1e-2, 1e-4, 1e-6, 1e-10}) {
       const FilmGridSpec g = grid(200, 40, Advection::upwind);
-      row("2D upwind 200x40, tolerance", g, tol, solve(mixing, g, tol, true, 3));
-      row("2D upwind 200x40, marching only", g, tol, solve(mixing, g, tol, false, 1));
+      row("2D upwind 200x40 newton-first", g, tol, solve(mixing, g, tol, true, 3));
+      row("2D upwind 200x40 marching-only", g, tol, solve(mixing, g, tol, false, 1));
     }
   }
   return 0;

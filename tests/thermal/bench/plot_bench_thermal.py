@@ -19,7 +19,7 @@ def main(csv_path, png_path):
     cases = sorted({r["case"] for r in rows}, reverse=True)
     fig, axes = plt.subplots(1, len(cases), figsize=(6.5 * len(cases), 5), squeeze=False)
     styles = {"2D upwind": "o-", "2D van Leer": "s-", "1D upwind": "^--", "1D van Leer": "v--",
-              "2D upwind 200x40, tolerance": "x:", "2D upwind 200x40, marching only": "+:"}
+              "2D upwind 200x40 newton-first": "x", "2D upwind 200x40 marching-only": "+"}
     for ax, case in zip(axes[0], cases):
         for method, style in styles.items():
             pts = [r for r in rows if r["case"] == case and r["method"] == method]
@@ -27,8 +27,9 @@ def main(csv_path, png_path):
                 continue
             t = [float(r["wall_s"]) for r in pts]
             e = [max(float(r["error_K"]), 1e-6) for r in pts]
-            ax.loglog(t, e, style, label=method)
-            if not method.startswith("2D upwind 200x40"):
+            label = method + (" (steady tol 1e-2..1e-10)" if "200x40" in method else "")
+            ax.loglog(t, e, style, label=label, ms=9 if "200x40" in method else 6)
+            if method.startswith("2D") and "200x40" not in method:
                 for r, ti, ei in zip(pts, t, e):
                     ax.annotate(f'{r["nz"]}x{r["nxi"]}', (ti, ei), fontsize=6, alpha=0.7)
         ax.axhline(0.1, color="grey", lw=0.8, ls="--")
