@@ -81,8 +81,11 @@ struct Simulation::Impl {
   std::vector<std::uint32_t> wall_mask;     // candidate walls per particle
   std::vector<BlockTally> tallies;
   // Per list entry, written in force pass 1 and gathered in pass 2.
-  std::vector<std::uint8_t> touch;  // in contact this step
-  std::vector<Vec3> j_force, j_torque;  // the partner's share of force and torque
+  std::vector<std::uint8_t> touch;  // in contact at the last force pass (then hist may be non-zero)
+  struct PartnerShare {
+    Vec3 force, torque;
+  };
+  std::vector<PartnerShare> share;  // the partner's share of force and torque
   std::size_t rebuilds = 0, pair_contacts = 0, wall_contacts = 0;
 };
 
@@ -333,6 +336,8 @@ void Simulation::rebuild() {
   const NeighbourList carried = carry_contacts(dirty_ ? im.carried : im.list, order, new_of_old);
   permute_particles(order);
   build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.pz, carried, threads_);
+  im.touch.resize(im.list.nbr.size());
+  for (std::size_t e = 0; e < im.touch.size(); ++e) im.touch[e] = !is_zero(im.list.hist[e]);
   im.carried = NeighbourList{};
 
   const std::size_t n = x_.size();
@@ -438,11 +443,7 @@ void Simulation::compute_forces(bool update_history) {
   const std::size_t nw = walls_.size();
   if (im.tallies.size() < static_cast<std::size_t>(nblocks)) im.tallies.resize(static_cast<std::size_t>(nblocks));
   const std::size_t entries = im.list.nbr.size();
-  if (im.touch.size() < entries) {
-    im.touch.resize(entries);
-    im.j_force.resize(entries);
-    im.j_torque.resize(entries);
-  }
+  if (im.share.size() < entries) im.share.resize(entries);
   const double dt = dt_;
   const double limit = blowup_fraction_;
   const bool relative_rolling = cfg_.wall_rolling == WallRolling::relative;
@@ -453,8 +454,7 @@ void Simulation::compute_forces(bool update_history) {
   ContactHistory* hist = im.list.hist.data();
   ContactHistory* whist = im.wall_hist.data();
   std::uint8_t* touch = im.touch.data();
-  Vec3* j_force = im.j_force.data();
-  Vec3* j_torque = im.j_torque.data();
+  Impl::PartnerShare* share = im.share.data();
   const Vec3 *X = x_.data(), *V = v_.data(), *Wv = w_.data();
   const double *R = r_.data(), *M = m_.data();
   const std::int64_t* ID = id_.data();
@@ -482,8 +482,10 @@ void Simulation::compute_forces(bool update_history) {
         const double rsum = ri + R[j];
         const double dist2 = norm2(d);
         if (dist2 >= rsum * rsum) {
-          touch[e] = 0;
-          if (!is_zero(hist[e])) hist[e] = ContactHistory{};  // separated: forget the pair
+          if (touch[e]) {  // just separated: forget the pair (reads 1 byte, not the history)
+            touch[e] = 0;
+            hist[e] = ContactHistory{};
+          }
           continue;
         }
         const double dist = std::sqrt(dist2);
@@ -513,13 +515,11 @@ void Simulation::compute_forces(bool update_history) {
         if (i_first) {
           F += res.force;
           T += res.torque_i;
-          j_force[e] = -res.force;
-          j_torque[e] = res.torque_j;
+          share[e] = {-res.force, res.torque_j};
         } else {
           F -= res.force;
           T += res.torque_j;
-          j_force[e] = res.force;
-          j_torque[e] = res.torque_i;
+          share[e] = {res.force, res.torque_i};
         }
         touch[e] = 1;
         ++tally.pair_contacts;
@@ -580,8 +580,8 @@ void Simulation::compute_forces(bool update_history) {
       for (std::uint32_t k = rev_start[j]; k < rev_start[j + 1]; ++k) {
         const std::uint32_t e = rev_entry[k];
         if (touch[e]) {
-          F += j_force[e];
-          T += j_torque[e];
+          F += share[e].force;
+          T += share[e].torque;
         }
       }
       f_[j] = F;
@@ -636,7 +636,7 @@ std::size_t Simulation::memory_bytes() const {
                   bytes_of(r_) + bytes_of(m_) + bytes_of(inv_m_) + bytes_of(inv_inertia_) + bytes_of(mat_) +
                   bytes_of(motion_);
   b += im.list.bytes() + im.carried.bytes() + bytes_of(im.x_build) + bytes_of(im.wall_hist) + bytes_of(im.wall_mask) +
-       bytes_of(im.touch) + bytes_of(im.j_force) + bytes_of(im.j_torque) +
+       bytes_of(im.touch) + bytes_of(im.share) +
        bytes_of(im.grid.cell_start);
   for (const auto& t : im.tallies) b += sizeof(BlockTally) + bytes_of(t.wall_force);
   return b;
