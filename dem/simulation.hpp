@@ -51,7 +51,7 @@ struct SimulationConfig {
   DrumMotion drum;
   WallRolling wall_rolling = WallRolling::relative;
   int threads = 0;       // OpenMP threads; 0 = omp_get_max_threads()
-  bool verbose = false;  // print the time-step advice at set-up
+  bool verbose = true;  // print the time-step advice (one line) at set-up
 };
 
 struct ParticleInit {

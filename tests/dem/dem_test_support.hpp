@@ -18,6 +18,7 @@ inline SimulationConfig quiet_config(double dt, Vec3 gravity = {0, 0, 0}) {
   SimulationConfig c;
   c.dt = dt;
   c.gravity = gravity;
+  c.verbose = false;
   return c;
 }
 

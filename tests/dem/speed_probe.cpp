@@ -1,5 +1,6 @@
 // Rough speed probe of the engine on a settled dense film (not a test; the project's
-// benchmark against LIGGGHTS lives in tests/bench). Usage: dem_speed_probe N [steps] [skin]
+// benchmark against LIGGGHTS lives in tests/bench).
+// Usage: dem_speed_probe N [steps] [skin_fraction] [settle_steps]
 #include <omp.h>
 
 #include <chrono>
@@ -20,7 +21,7 @@ int main(int argc, char** argv) {
   if (argc > 3) cfg.skin_fraction = std::atof(argv[3]);
   Simulation sim(cfg);
   build_film(sim, scene, n);
-  sim.step(3000);  // settle
+  sim.step(argc > 4 ? std::strtol(argv[4], nullptr, 10) : 3000);  // settle
   for (int threads : {1, 2}) {
     sim.set_threads(threads);
     const auto before = sim.neighbour_stats();
