@@ -8,26 +8,12 @@
 #include <limits>
 #include <sstream>
 
-#include "dem/contact_law.hpp"
-#include "dem/neighbour_list.hpp"
-#include "dem/periodic_z.hpp"
+#include "dem/simulation_impl.hpp"
 
 namespace centrec::dem {
 
 namespace {
 
-// Particles are processed in fixed blocks so that per-wall force sums and statistics are
-// reduced in an order independent of the thread count (bitwise determinism).
-constexpr long kBlock = 256;
-constexpr int kMaxWalls = 32;  // wall candidates are a 32-bit mask per particle
-
-struct BlockTally {
-  std::vector<Vec3> wall_force;  // one per wall
-  std::size_t pair_contacts = 0, wall_contacts = 0;
-  long blowup_index = -1;  // first offending particle of the block
-  double blowup_overlap = 0.0;
-  std::string blowup_partner;
-};
 
 template <class T>
 void permute(std::vector<T>& a, const std::vector<std::int32_t>& order) {
@@ -65,29 +51,6 @@ bool wall_candidate(const Wall& w, Vec3 p, double r, double margin) {
 
 }  // namespace
 
-struct Simulation::Impl {
-  NeighbourList list;              // valid while !dirty_
-  NeighbourList carried;           // while dirty_: the contacts to carry into the next rebuild
-  CellGrid grid;
-  PeriodicZ pz;
-  double skin = 0.0;
-  std::vector<Vec3> x_build;                // positions at the last rebuild
-  // Displacements are measured in the drum's rotating frame when the whole scene is
-  // symmetric about the drum axis (pair distances and wall gaps do not change under the
-  // rigid rotation), so a co-rotating film does not trigger rebuilds at omega R / skin.
-  bool drum_frame = false;
-  double angle_since_build = 0.0;
-  std::vector<ContactHistory> wall_hist;    // N x walls
-  std::vector<std::uint32_t> wall_mask;     // candidate walls per particle
-  std::vector<BlockTally> tallies;
-  // Per list entry, written in force pass 1 and gathered in pass 2.
-  std::vector<std::uint8_t> touch;  // in contact at the last force pass (then hist may be non-zero)
-  struct PartnerShare {
-    Vec3 force, torque;
-  };
-  std::vector<PartnerShare> share;  // the partner's share of force and torque
-  std::size_t rebuilds = 0, pair_contacts = 0, wall_contacts = 0;
-};
 
 Simulation::Simulation(const SimulationConfig& config) : cfg_(config), impl_(std::make_unique<Impl>()) {
   if (cfg_.periodic_z && !(cfg_.z_hi > cfg_.z_lo))
@@ -433,175 +396,6 @@ void Simulation::integrate_second_half() {
     if (motion_[i] != Motion::free) continue;
     v_[i] += (half * inv_m_[i]) * f_[i];
     w_[i] += (half * inv_inertia_[i]) * t_[i];
-  }
-}
-
-void Simulation::compute_forces(bool update_history) {
-  Impl& im = *impl_;
-  const long n = static_cast<long>(x_.size());
-  const long nblocks = (n + kBlock - 1) / kBlock;
-  const std::size_t nw = walls_.size();
-  if (im.tallies.size() < static_cast<std::size_t>(nblocks)) im.tallies.resize(static_cast<std::size_t>(nblocks));
-  const std::size_t entries = im.list.nbr.size();
-  if (im.share.size() < entries) im.share.resize(entries);
-  const double dt = dt_;
-  const double limit = blowup_fraction_;
-  const bool relative_rolling = cfg_.wall_rolling == WallRolling::relative;
-  const PeriodicZ pz = im.pz;
-  const Vec3 g = cfg_.gravity;
-  const std::uint32_t* start = im.list.start.data();
-  const std::int32_t* nbr = im.list.nbr.data();
-  ContactHistory* hist = im.list.hist.data();
-  ContactHistory* whist = im.wall_hist.data();
-  std::uint8_t* touch = im.touch.data();
-  Impl::PartnerShare* share = im.share.data();
-  const Vec3 *X = x_.data(), *V = v_.data(), *Wv = w_.data();
-  const double *R = r_.data(), *M = m_.data();
-  const std::int64_t* ID = id_.data();
-  const int* MAT = mat_.data();
-  const Motion* MOT = motion_.data();
-
-  // Pass 1: each pair once, in the row of its lower index. The row owner's share is summed
-  // at once; the partner's share is parked per entry for pass 2.
-#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
-  for (long b = 0; b < nblocks; ++b) {
-    BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
-    tally.wall_force.assign(nw, Vec3{});
-    tally.pair_contacts = tally.wall_contacts = 0;
-    tally.blowup_index = -1;
-    const long i_end = std::min(n, (b + 1) * kBlock);
-    for (long i = b * kBlock; i < i_end; ++i) {
-      const Vec3 xi = X[i];
-      const double ri = R[i];
-      const std::int64_t idi = ID[i];
-      Vec3 F{}, T{};
-      for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
-        const std::int32_t j = nbr[e];
-        Vec3 d = xi - X[j];
-        d.z = pz.image(d.z);
-        const double rsum = ri + R[j];
-        const double dist2 = norm2(d);
-        if (dist2 >= rsum * rsum) {
-          if (touch[e]) {  // just separated: forget the pair (reads 1 byte, not the history)
-            touch[e] = 0;
-            hist[e] = ContactHistory{};
-          }
-          continue;
-        }
-        const double dist = std::sqrt(dist2);
-        const double delta = rsum - dist;
-        if (!(delta <= limit * std::min(ri, R[j])) && tally.blowup_index < 0) {
-          tally.blowup_index = i;
-          tally.blowup_overlap = delta;
-          tally.blowup_partner = "particle id " + std::to_string(ID[j]);
-        }
-        // Canonical operand order (lower id first): the result and the stored history do
-        // not depend on which of the two is the row owner after a re-sort.
-        const bool i_first = idi < ID[j];
-        const long a = i_first ? i : j, c = i_first ? j : i;
-        const double ra = R[a], rc = R[c], ma = M[a], mc = M[c];
-        const Vec3 nrm = (1.0 / dist) * (i_first ? d : -d);
-        const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
-        const ContactInput in{delta,
-                              nrm,
-                              contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, nrm),
-                              Wv[a] - Wv[c],
-                              ra * rc / (ra + rc),
-                              ma * mc / (ma + mc),
-                              arm_a,
-                              arm_c};
-        const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
-        if (update_history) hist[e] = res.history;
-        if (i_first) {
-          F += res.force;
-          T += res.torque_i;
-          share[e] = {-res.force, res.torque_j};
-        } else {
-          F -= res.force;
-          T += res.torque_j;
-          share[e] = {res.force, res.torque_i};
-        }
-        touch[e] = 1;
-        ++tally.pair_contacts;
-      }
-      if (MOT[i] != Motion::free) {  // carried by the drum: forces on it are not needed
-        f_[i] = {};
-        t_[i] = {};
-        continue;
-      }
-      std::uint32_t mask = im.wall_mask[i];
-      while (mask != 0u) {
-        const int wi = __builtin_ctz(mask);
-        mask &= mask - 1u;
-        const Wall& wall = walls_[static_cast<std::size_t>(wi)];
-        ContactHistory& h = whist[static_cast<std::size_t>(i) * nw + static_cast<std::size_t>(wi)];
-        double dist;
-        Vec3 nrm, point;
-        if (!wall_geometry(wall, xi, dist, nrm, point) || dist >= ri) {
-          h = ContactHistory{};
-          continue;
-        }
-        const double delta = ri - dist;
-        if (!(delta <= limit * ri) && tally.blowup_index < 0) {
-          tally.blowup_index = i;
-          tally.blowup_overlap = delta;
-          tally.blowup_partner = "wall " + std::to_string(wi);
-        }
-        const double arm = ri - 0.5 * delta;
-        const ContactInput in{delta,
-                              nrm,
-                              contact_velocity(V[i] - wall_velocity_at(wall, point), Wv[i], Vec3{}, arm, 0.0, nrm),
-                              relative_rolling ? Wv[i] - wall.angular_velocity : Wv[i],
-                              ri,
-                              M[i],
-                              arm,
-                              0.0};
-        const ContactResult res = evaluate_contact(pair(MAT[i], wall.material), in, h, dt);
-        if (update_history) h = res.history;
-        F += res.force;
-        T += res.torque_i;
-        tally.wall_force[static_cast<std::size_t>(wi)] -= res.force;
-        ++tally.wall_contacts;
-      }
-      f_[i] = F + M[i] * g;
-      t_[i] = T;
-    }
-  }
-  // Pass 2: gather the parked partner shares in the fixed reverse-index order.
-  const std::uint32_t* rev_start = im.list.rev_start.data();
-  const std::uint32_t* rev_entry = im.list.rev_entry.data();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
-  for (long b = 0; b < nblocks; ++b) {
-    BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
-    const long j_end = std::min(n, (b + 1) * kBlock);
-    for (long j = b * kBlock; j < j_end; ++j) {
-      if (MOT[j] != Motion::free) continue;
-      Vec3 F = f_[j], T = t_[j];
-      for (std::uint32_t k = rev_start[j]; k < rev_start[j + 1]; ++k) {
-        const std::uint32_t e = rev_entry[k];
-        if (touch[e]) {
-          F += share[e].force;
-          T += share[e].torque;
-        }
-      }
-      f_[j] = F;
-      t_[j] = T;
-      if ((!is_finite(F) || !is_finite(T) || !is_finite(X[j])) && tally.blowup_index < 0) {
-        tally.blowup_index = j;
-        tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
-      }
-    }
-  }
-  // Fixed-order reduction over blocks.
-  for (auto& f : wall_force_) f = {};
-  im.pair_contacts = im.wall_contacts = 0;
-  for (long b = 0; b < nblocks; ++b) {
-    const BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
-    if (tally.blowup_index >= 0)
-      report_blow_up(static_cast<std::size_t>(tally.blowup_index), tally.blowup_overlap, tally.blowup_partner);
-    for (std::size_t w = 0; w < nw; ++w) wall_force_[w] += tally.wall_force[w];
-    im.pair_contacts += tally.pair_contacts;
-    im.wall_contacts += tally.wall_contacts;
   }
 }
 
