@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -22,11 +23,26 @@ double layer_spacing(const FilmCase& c) {
   return kGap * std::sqrt(d * d - 0.25 * a * a);
 }
 double ring_radius(const FilmCase& c, int layer) {
-  // 1 micron off the wall: the first contact with the wall forms in the first steps.
-  return c.drum_radius - c.radius() - 1e-6 - layer * layer_spacing(c);
+  // 4 microns off the wall (more than the jitter can move a centre radially, sqrt(2) x
+  // 2.4 um): no initial wall overlap, and the first wall contacts form in the first steps.
+  return c.drum_radius - c.radius() - 4e-6 - layer * layer_spacing(c);
 }
 // Particles on a ring of radius r with chord (centre distance) >= a.
 long ring_count(double r, double a) { return static_cast<long>(std::floor(M_PI / std::asin(0.5 * a / r))); }
+
+// Deterministic jitter in [-1, 1) from the particle index and coordinate (splitmix64): the
+// same on every platform, and it breaks the lattice's exact symmetry under a shift by one
+// row, which would otherwise keep every row's motion identical until round-off grows.
+double jitter(std::uint64_t i) {
+  std::uint64_t z = i + 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-52 - 1.0;
+}
+// Jitter amplitude per coordinate: 0.2 % of d, so two neighbours approach by at most
+// 2 sqrt(3) x 0.2 % d = 0.7 % d, less than the lattice's 1 % gap.
+constexpr double kJitter = 0.002;
 
 }  // namespace
 
@@ -57,9 +73,11 @@ FilmState make_film_lattice(const FilmCase& c, long target_n) {
       for (long j = 0; j < n; ++j) {
         const double th = 2.0 * M_PI * (j + shift) / n;
         ParticleState p{};
-        p.x[0] = r * std::cos(th);
-        p.x[1] = r * std::sin(th);
-        p.x[2] = z;
+        const std::uint64_t id = 3 * s.particles.size();
+        const double amp = kJitter * c.diameter;
+        p.x[0] = r * std::cos(th) + amp * jitter(id);
+        p.x[1] = r * std::sin(th) + amp * jitter(id + 1);
+        p.x[2] = z + amp * jitter(id + 2);
         // Rigid co-rotation with the drum: v = omega z x r, spin = omega z.
         p.v[0] = -W * p.x[1];
         p.v[1] = W * p.x[0];

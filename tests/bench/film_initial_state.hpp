@@ -22,7 +22,8 @@ struct FilmState {
 // Lattice film of about target_n particles: case.layers rings stacked inwards from the
 // wall, each ring holding as many particles as fit at centre distance >= 1.01 d, rows
 // 1.01 d apart along z, odd layers shifted half a row so adjacent layers nest (layer
-// spacing chosen so no two particles overlap). Solid fraction about 0.6.
+// spacing chosen so no two particles overlap), each centre jittered deterministically by
+// up to 0.2 % d per coordinate. Solid fraction about 0.6.
 FilmState make_film_lattice(const FilmCase& c, long target_n);
 
 // Particles per axial row of the lattice (to pick N).
