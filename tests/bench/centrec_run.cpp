@@ -88,8 +88,8 @@ EngineResult run_centrec(const FilmCase& c, const FilmState& s, const CentrecRun
     }
     res.final = summarize(c, sim);
     const dem::NeighbourStats ns = sim.neighbour_stats();
-    // centrec's lists are full (each pair in both rows): halve to compare with LIGGGHTS.
-    res.list_pairs_per_particle = 0.5 * static_cast<double>(ns.list_entries) / res.particles;
+    // NeighbourStats::list_entries holds each pair once (half list), as LIGGGHTS' count.
+    res.list_pairs_per_particle = static_cast<double>(ns.list_entries) / res.particles;
     res.rebuilds_per_phase = static_cast<double>(ns.rebuilds - rebuilds0) / r.repeats;
     res.ok = res.final.atoms == res.particles;
     if (!res.ok) res.note = "centrec lost particles";
