@@ -104,6 +104,7 @@ DemCase read_dem_case(yaml::MapReader root) {
   s.dt = run.number("dt", 0.0, Range::non_negative(), "s (0 = advised)");
   s.max_impact_speed = run.number("max_impact_speed", 2.0, Range::positive(), "m/s");
   s.threads = static_cast<int>(run.integer("threads", 0, 0, 1024));
+  s.skin = run.number("skin_d", 0.2, Range::closed(0.01, 5.0), "d (Verlet skin)") * d;
   c.run.duration = run.number("duration", 1.0, Range::positive(), "s");
   c.run.progress_interval = run.number("progress_interval", 0.0, Range::non_negative(), "s");
   c.run.flow_window_turns = run.number("flow_window_turns", 5.0, Range::positive(), "turns");

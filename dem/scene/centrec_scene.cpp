@@ -23,6 +23,7 @@ SimulationConfig engine_config(const SceneConfig& c) {
   s.drum.omega = c.drum.omega;
   s.wall_rolling = c.wall_rolling;
   s.threads = c.threads;
+  if (c.skin > 0.0) s.skin_fraction = c.skin / SizeSampler(c.particle, 0).max_diameter();
   // The engine's automatic blow-up limit looks at the particles present at set-up; a
   // drum that starts empty has none, so derive it here from the largest feeder sphere:
   // twice the Hertz overlap of a particle-particle impact at max_impact_speed.

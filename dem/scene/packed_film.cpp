@@ -21,9 +21,9 @@ std::vector<FilmSite> packed_film_sites(const std::vector<double>& radii, double
   std::size_t next = 0;
   for (int layer = 0; next < radii.size(); ++layer) {
     const double r = R - inset - 0.5 * dmax - layer * pitch;
-    if (r < 0.5 * R)
+    if (r < 2.0 * dmax)
       throw std::invalid_argument("initial film: " + std::to_string(radii.size()) +
-                                  " particles fill more than half the drum radius");
+                                  " particles do not fit in the drum");
     const int n_theta = static_cast<int>(std::floor(2.0 * M_PI * r / pitch));
     const double dth = 2.0 * M_PI / n_theta;
     // Stagger alternate layers so they nest instead of stacking column on column.

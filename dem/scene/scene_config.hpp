@@ -85,6 +85,7 @@ struct SceneConfig {
   double gravity = 9.81;  // m/s^2
   double dt = 0.0;        // s; 0 = the engine's recommended step
   double max_impact_speed = 2.0;  // m/s, for the time-step advice
+  double skin = 0.0;              // Verlet skin in m; 0 = the engine's default (0.2 d)
   int threads = 0;
   std::uint64_t seed = 12345;
 };
