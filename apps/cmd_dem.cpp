@@ -13,6 +13,7 @@
 #include "dem/scene/centrec_scene.hpp"
 #include "dem/scene/scene_sampler.hpp"
 #include "progress_meter.hpp"
+#include "summary_json.hpp"
 
 namespace centrec::cli {
 
@@ -173,7 +174,7 @@ int cmd_dem(const Args& args) {
         "theta increases against the drum rotation; 90 deg = top (opposite gravity's transverse part)";
   }
   j["resolved_config"] = cf.resolved_yaml;
-  write_text_atomically(opt.out_dir + "/summary.json", j.dump(2) + "\n");
+  io::write_json_file(opt.out_dir + "/summary.json", j);
 
   write_dem_h5(opt.out_dir, cf.path, cf.resolved_yaml, scene, fields, snapshots);
 

@@ -1,20 +1,11 @@
 #include "summary_json.hpp"
 
-#include <cstdio>
-#include <fstream>
-#include <stdexcept>
+#include "atomic_write.hpp"
 
 namespace centrec::io {
 
 void write_json_file(const std::string& path, const nlohmann::json& j) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-    out << j.dump(2) << "\n";
-    if (!out) throw std::runtime_error("write failed: " + tmp);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename " + tmp + " onto " + path);
+  cli::write_text_atomically(path, j.dump(2) + "\n");
 }
 
 }  // namespace centrec::io
