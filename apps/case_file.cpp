@@ -13,8 +13,7 @@ CaseFile read_case_file(const std::string& path) {
     ThermalCase t;
     t.path = path;
     t.title = c.title;
-    const std::size_t slash = path.rfind('/');
-    read_thermal_sections(root, slash == std::string::npos ? "" : path.substr(0, slash), t);
+    read_thermal_sections(root, case_directory(path), t);
     c.thermal = std::move(t);
   }
   root.finish();

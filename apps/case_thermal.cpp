@@ -193,13 +193,17 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   t.finish();
 }
 
+std::string case_directory(const std::string& case_path) {
+  const std::size_t slash = case_path.rfind('/');
+  return slash == std::string::npos ? "" : case_path.substr(0, slash);
+}
+
 ThermalCase read_thermal_case(const std::string& path) {
   MapReader root = MapReader::from_file(path);
   ThermalCase c;
   c.path = path;
   c.title = root.string("title", "");
-  const std::size_t slash = path.rfind('/');
-  read_thermal_sections(root, slash == std::string::npos ? "" : path.substr(0, slash), c);
+  read_thermal_sections(root, case_directory(path), c);
   root.finish();
   c.resolved_yaml = root.resolved_text();
   return c;

@@ -27,6 +27,8 @@ struct ThermalCase {
 
 // Reads the sections `film` and `thermal` from a root reader (shared by other case readers).
 void read_thermal_sections(yaml::MapReader& root, const std::string& case_dir, ThermalCase& c);
+// Folder of a case file, against which its relative file paths resolve ("" = cwd).
+std::string case_directory(const std::string& case_path);
 // Reads a whole thermal case file; throws yaml::ConfigError on the first problem.
 ThermalCase read_thermal_case(const std::string& path);
 

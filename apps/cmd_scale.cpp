@@ -168,10 +168,7 @@ std::string yaml_snippet(const ReceiverOperatingPoint& a, const ReceiverOperatin
 }  // namespace
 
 int cmd_scale(const Args& args) {
-  // Not wants_help(): that lives in main.cpp, and the tests call this function directly.
-  const bool help = std::find(args.begin(), args.end(), "--help") != args.end() ||
-                    std::find(args.begin(), args.end(), "-h") != args.end();
-  if (help || args.empty()) {
+  if (wants_help(args) || args.empty()) {
     std::printf("%s", kUsage);
     return args.empty() ? 2 : 0;
   }

@@ -105,7 +105,7 @@ void write_snapshot(H5File& f, const NamedSnapshot& s) {
   }
   f.write(g + "/position", pos, {n, 3}, "m");
   f.write(g + "/velocity", vel, {n, 3}, "m/s");
-  f.write(g + "/radius", d.r, "m");
+  f.write(g + "/radius", d.radius, "m");
   f.write(g + "/id", id, "1");
   f.set_attribute(g, "time", d.time);
 }

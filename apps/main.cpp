@@ -18,12 +18,6 @@ const std::vector<Command>& commands() {
   return table;
 }
 
-bool wants_help(const Args& args) {
-  for (const auto& a : args)
-    if (a == "-h" || a == "--help") return true;
-  return false;
-}
-
 }  // namespace centrec::cli
 
 namespace {

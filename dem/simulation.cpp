@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "dem/simulation_impl.hpp"
+#include "dem/sphere_mass.hpp"
 
 namespace centrec::dem {
 
@@ -131,8 +132,7 @@ std::int64_t Simulation::add_particle(const ParticleInit& p) {
     throw std::invalid_argument("particle: unknown material index " + std::to_string(p.material));
   if (!is_finite(p.x) || !is_finite(p.v) || !is_finite(p.w)) throw std::invalid_argument("particle: non-finite state");
   invalidate_list();
-  const double mass = materials_[static_cast<std::size_t>(p.material)].density * (4.0 / 3.0) * M_PI * p.radius *
-                      p.radius * p.radius;
+  const double mass = sphere_mass(materials_[static_cast<std::size_t>(p.material)].density, p.radius);
   const std::int64_t id = next_id_++;
   if (insert_log_.empty() || insert_log_.back().first != step_) insert_log_.push_back({step_, id});
   id_.push_back(id);
@@ -226,13 +226,13 @@ TimeStepAdvice Simulation::time_step_advice() const {
   for (std::size_t a_ = 0; a_ < n_mat_; ++a_) {
     if (!std::isfinite(rmin[a_])) continue;
     const double r = rmin[a_];
-    const double m = materials_[a_].density * (4.0 / 3.0) * M_PI * r * r * r;
+    const double m = sphere_mass(materials_[a_].density, r);
     a.rayleigh_time = std::min(a.rayleigh_time, rayleigh_time(materials_[a_], r));
     for (std::size_t b = 0; b < n_mat_; ++b) {
       const double E = pc_[a_ * n_mat_ + b].E_eff;
       if (std::isfinite(rmin[b])) {  // particle-particle: the pair of the two smallest
         const double rb = rmin[b];
-        const double mb = materials_[b].density * (4.0 / 3.0) * M_PI * rb * rb * rb;
+        const double mb = sphere_mass(materials_[b].density, rb);
         a.hertz_time = std::min(a.hertz_time, hertz_contact_time(m * mb / (m + mb), r * rb / (r + rb), E,
                                                                  cfg_.max_impact_speed));
       }

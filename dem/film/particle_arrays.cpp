@@ -23,4 +23,19 @@ void require_arrays(const ParticleArrays& p, const char* needs, const char* who)
   }
 }
 
+ParticleArrays ParticleColumns::view() const {
+  ParticleArrays v;
+  v.count = x.size();
+  v.x = x.data();
+  v.y = y.data();
+  v.z = z.data();
+  v.vx = vx.data();
+  v.vy = vy.data();
+  v.vz = vz.data();
+  v.radius = radius.data();
+  v.id = id.data();
+  v.time = time;
+  return v;
+}
+
 }  // namespace centrec::film

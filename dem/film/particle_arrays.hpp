@@ -6,6 +6,7 @@
 // outlet at z = L, wall at sqrt(x^2 + y^2) = R. SI units throughout.
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace centrec::film {
 
@@ -20,6 +21,15 @@ struct ParticleArrays {
   const double* radius = nullptr;     // m
   const std::int64_t* id = nullptr;   // persistent particle id (dispersion only)
   double time = 0.0;                  // s, simulated time of the snapshot
+};
+
+// Owning columns for a snapshot (copied out of an engine, or built by a test).
+struct ParticleColumns {
+  std::vector<double> x, y, z, vx, vy, vz, radius;
+  std::vector<std::int64_t> id;
+  double time = 0.0;
+  std::size_t size() const { return x.size(); }
+  ParticleArrays view() const;
 };
 
 // Throws std::invalid_argument naming the first of the listed arrays that is null

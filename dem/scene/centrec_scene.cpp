@@ -5,7 +5,7 @@
 
 #include "dem/scene/packed_film.hpp"
 #include "dem/scene/size_distribution.hpp"
-#include "dem/scene/sphere_mass.hpp"
+#include "dem/sphere_mass.hpp"
 #include "dem/scene/wall_lattice.hpp"
 
 namespace centrec::dem::scene {

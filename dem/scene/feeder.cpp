@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "dem/scene/sphere_mass.hpp"
+#include "dem/sphere_mass.hpp"
 
 namespace centrec::dem::scene {
 

@@ -5,26 +5,11 @@
 
 namespace centrec::dem::scene {
 
-film::ParticleArrays SnapshotArrays::view() const {
-  film::ParticleArrays p;
-  p.count = x.size();
-  p.x = x.data();
-  p.y = y.data();
-  p.z = z.data();
-  p.vx = vx.data();
-  p.vy = vy.data();
-  p.vz = vz.data();
-  p.radius = r.data();
-  p.id = id.data();
-  p.time = time;
-  return p;
-}
-
 SnapshotArrays take_snapshot(const Simulation& sim) {
   SnapshotArrays s;
   s.time = sim.time();
   const std::size_t n = sim.size();
-  for (auto* v : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.r}) v->reserve(n);
+  for (auto* v : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.radius}) v->reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (sim.motions()[i] != Motion::free) continue;  // the glued layer is wall, not film
     const Vec3 x = sim.positions()[i], v = sim.velocities()[i];
@@ -34,7 +19,7 @@ SnapshotArrays take_snapshot(const Simulation& sim) {
     s.vx.push_back(v.x);
     s.vy.push_back(v.y);
     s.vz.push_back(v.z);
-    s.r.push_back(sim.radii()[i]);
+    s.radius.push_back(sim.radii()[i]);
     s.id.push_back(sim.ids()[i]);
   }
   return s;

@@ -25,12 +25,7 @@ struct SamplingSpec {
 };
 
 // One snapshot of the free particles in the sampler's SoA layout (copied from the engine).
-struct SnapshotArrays {
-  std::vector<double> x, y, z, vx, vy, vz, r;
-  std::vector<std::int64_t> id;
-  double time = 0.0;
-  film::ParticleArrays view() const;
-};
+using SnapshotArrays = film::ParticleColumns;
 SnapshotArrays take_snapshot(const Simulation& sim);
 
 struct FilmFields {

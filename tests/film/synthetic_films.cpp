@@ -33,21 +33,6 @@ void Particles::add(double px, double py, double pz, double r) {
   id.push_back(static_cast<std::int64_t>(id.size()));
 }
 
-ParticleArrays Particles::view() const {
-  ParticleArrays v;
-  v.count = x.size();
-  v.x = x.data();
-  v.y = y.data();
-  v.z = z.data();
-  v.vx = vx.data();
-  v.vy = vy.data();
-  v.vz = vz.data();
-  v.radius = radius.data();
-  v.id = id.data();
-  v.time = time;
-  return v;
-}
-
 Particles layered_lattice(double R, double length, double d, int layers, double h, double a_theta, double a_z,
                           bool stagger) {
   Particles p;

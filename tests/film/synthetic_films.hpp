@@ -19,13 +19,8 @@ DrumFrame paper_view_frame(double R, double L);
 // Film-section grid over the whole drum with a fixed particle diameter d.
 FilmSectionGrid section_grid(int axial_sections, int tangential_bins, double d);
 
-struct Particles {
-  std::vector<double> x, y, z, vx, vy, vz, radius;
-  std::vector<std::int64_t> id;
-  double time = 0.0;
+struct Particles : ParticleColumns {
   void add(double px, double py, double pz, double r);
-  std::size_t size() const { return x.size(); }
-  ParticleArrays view() const;
 };
 
 // Layers of spheres (diameter d) at centre wall distances d/2 + k h, k = 0..layers-1,
