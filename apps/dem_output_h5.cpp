@@ -137,21 +137,22 @@ std::string xdmf(const std::vector<NamedSnapshot>& snaps) {
 }  // namespace
 
 void write_dem_h5(const std::string& dir, const std::string& case_path, const std::string& resolved_yaml,
-                  const dem::scene::CentrecScene& scene, const dem::scene::FilmFields& fields,
-                  const std::vector<NamedSnapshot>& snapshots) {
+                  const dem::scene::SceneConfig& scene, const DemRunResult& run) {
   H5File f = H5File::create(dir + "/dem.h5");
   f.set_attribute("/", "code_version", CENTREC_VERSION);
+  f.set_attribute("/", "engine", run.engine);
+  f.set_attribute("/", "engine_version", run.engine_version);
   f.set_attribute("/", "case", case_path);
   f.set_attribute("/", "resolved_config", resolved_yaml);
-  f.set_attribute("/", "drum_radius_m", scene.drum_radius());
-  f.set_attribute("/", "particle_diameter_m", scene.config().particle.diameter);
-  f.set_attribute("/", "turn_period_s", scene.turn_period());
-  write_mass_flow(f, scene.mass_flow_log());
-  write_film(f, fields);
+  f.set_attribute("/", "drum_radius_m", 0.5 * scene.drum.diameter);
+  f.set_attribute("/", "particle_diameter_m", scene.particle.diameter);
+  f.set_attribute("/", "turn_period_s", dem::scene::turn_period(scene));
+  write_mass_flow(f, run.mass_flow);
+  write_film(f, run.fields);
   f.create_group("/snapshots");
-  for (const auto& s : snapshots) write_snapshot(f, s);
+  for (const auto& s : run.snapshots) write_snapshot(f, s);
   f.commit();
-  write_text_atomically(dir + "/dem.xmf", xdmf(snapshots));
+  write_text_atomically(dir + "/dem.xmf", xdmf(run.snapshots));
 }
 
 }  // namespace centrec::cli

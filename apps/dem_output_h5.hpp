@@ -6,22 +6,17 @@
 //   /mass_flow/{time, fed, out, lost, holdup, particles}   cumulative masses vs time
 //   /film/...       averaged film fields over the sampled turns (absent without sampling)
 //   /snapshots/<name>/{position [N,3], velocity [N,3], radius, id}
-//   root attributes: code_version, case, resolved_config
+//   root attributes: code_version, engine, engine_version, case, resolved_config,
+//                    drum_radius_m, particle_diameter_m, turn_period_s
 #include <string>
 #include <vector>
 
-#include "dem/scene/centrec_scene.hpp"
-#include "dem/scene/scene_sampler.hpp"
+#include "dem/scene/scene_config.hpp"
+#include "dem_run_result.hpp"
 
 namespace centrec::cli {
 
-struct NamedSnapshot {
-  std::string name;  // group name, e.g. "t0.500000"
-  dem::scene::SnapshotArrays data;
-};
-
 void write_dem_h5(const std::string& dir, const std::string& case_path, const std::string& resolved_yaml,
-                  const dem::scene::CentrecScene& scene, const dem::scene::FilmFields& fields,
-                  const std::vector<NamedSnapshot>& snapshots);
+                  const dem::scene::SceneConfig& scene, const DemRunResult& run);
 
 }  // namespace centrec::cli

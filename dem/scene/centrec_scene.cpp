@@ -10,12 +10,16 @@
 
 namespace centrec::dem::scene {
 
+Vec3 scene_gravity(const SceneConfig& c) {
+  const double g = c.gravity, tilt = c.drum.tilt;
+  return {0.0, -g * std::cos(tilt), g * std::sin(tilt)};
+}
+
 namespace {
 
 SimulationConfig engine_config(const SceneConfig& c) {
   SimulationConfig s;
-  const double g = c.gravity, tilt = c.drum.tilt;
-  s.gravity = {0.0, -g * std::cos(tilt), g * std::sin(tilt)};
+  s.gravity = scene_gravity(c);
   s.dt = c.dt;
   s.max_impact_speed = c.max_impact_speed;
   s.drum.origin = {0.0, 0.0, 0.0};
@@ -131,7 +135,7 @@ void CentrecScene::build_walls() {
   if (cfg_.drum.lip_height > 0.0) sim_->add_wall(Wall::disc(Vec3{0, 0, L}, z, R, R - cfg_.drum.lip_height, om, w));
 }
 
-double CentrecScene::turn_period() const { return 2.0 * M_PI / std::fabs(cfg_.drum.omega); }
+double CentrecScene::turn_period() const { return scene::turn_period(cfg_); }
 
 const FeederStats& CentrecScene::feeder_stats() const {
   static const FeederStats none{};

@@ -2,6 +2,7 @@
 // The CentRec scene (DESIGN.md section 4): builds the engine's walls, rough wall and
 // starting film from a SceneConfig, then advances it in batches, feeding particles at
 // the inlet and removing those past the outlet, and logs the mass flows.
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -21,6 +22,12 @@ struct MassFlowSample {
   double holdup = 0.0;         // kg of free particles in the drum now
   std::int64_t particles = 0;  // free particles in the drum now
 };
+
+// Gravity in the drum frame (axis +z, outlet at z = L): the tilt puts a component along +z.
+Vec3 scene_gravity(const SceneConfig& c);
+
+// Seconds per drum revolution.
+inline double turn_period(const SceneConfig& c) { return 2.0 * M_PI / std::fabs(c.drum.omega); }
 
 class CentrecScene {
  public:

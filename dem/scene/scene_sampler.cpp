@@ -25,12 +25,11 @@ SnapshotArrays take_snapshot(const Simulation& sim) {
   return s;
 }
 
-SceneSampler::SceneSampler(const CentrecScene& scene, const SamplingSpec& spec) : spec_(spec) {
-  const SceneConfig& c = scene.config();
+SceneSampler::SceneSampler(const SceneConfig& c, const SamplingSpec& spec) : spec_(spec) {
   const bool slice = c.slice.enabled;
   const double length = slice ? c.slice.length : c.drum.length;
-  const Vec3 g = scene.simulation().config().gravity;
-  frame_ = film::DrumFrame::from_gravity(scene.drum_radius(), length, g.x, g.y, c.drum.omega);
+  const Vec3 g = scene_gravity(c);
+  frame_ = film::DrumFrame::from_gravity(0.5 * c.drum.diameter, length, g.x, g.y, c.drum.omega);
   const double d = c.particle.diameter;
 
   grid_.axial_sections = slice ? 1 : spec.axial_sections;
@@ -64,8 +63,7 @@ SceneSampler::SceneSampler(const CentrecScene& scene, const SamplingSpec& spec) 
   dispersion_ = std::make_unique<film::DispersionEstimator>(frame_, bins);
 }
 
-void SceneSampler::snapshot(const CentrecScene& scene) {
-  SnapshotArrays s = take_snapshot(scene.simulation());
+void SceneSampler::add_snapshot(SnapshotArrays s) {
   const film::ParticleArrays p = s.view();
   thickness_.add(film::sample_film_sections(p, frame_, grid_));
   velocity_->add_snapshot(p);
@@ -82,12 +80,16 @@ void SceneSampler::sample_turns(CentrecScene& scene, double turns) {
   for (int t = 0; t < whole; ++t) {
     for (int k = 0; k < spec_.snapshots_per_turn; ++k) {
       scene.advance(interval);
-      snapshot(scene);
+      add_snapshot(take_snapshot(scene.simulation()));
     }
-    velocity_->end_period();
-    solid_->end_period();
-    ++turns_;
+    end_turn();
   }
+}
+
+void SceneSampler::end_turn() {
+  velocity_->end_period();
+  solid_->end_period();
+  ++turns_;
 }
 
 FilmFields SceneSampler::fields() const {

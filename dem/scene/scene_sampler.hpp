@@ -44,16 +44,23 @@ struct FilmFields {
   double dispersion_lag = 0.0;                                   // s
 };
 
+// Engine-neutral: the frame comes from the SceneConfig alone, so snapshots read from
+// another engine's dumps (LIGGGHTS) feed the same samplers through add_snapshot/end_turn.
 class SceneSampler {
  public:
-  SceneSampler(const CentrecScene& scene, const SamplingSpec& spec);
-  // Advances the scene by `turns` drum turns, sampling as it goes.
+  SceneSampler(const SceneConfig& config, const SamplingSpec& spec);
+  SceneSampler(const CentrecScene& scene, const SamplingSpec& spec) : SceneSampler(scene.config(), spec) {}
+  // Advances the native scene by `turns` drum turns, sampling as it goes.
   void sample_turns(CentrecScene& scene, double turns);
+  // One snapshot of the free particles, taken snapshots_per_turn times per turn.
+  void add_snapshot(SnapshotArrays s);
+  // Closes the current turn (one period of the velocity and solid-fraction samplers).
+  void end_turn();
   FilmFields fields() const;
   const film::DrumFrame& frame() const { return frame_; }
+  const SamplingSpec& spec() const { return spec_; }
 
  private:
-  void snapshot(const CentrecScene& scene);
   SamplingSpec spec_;
   film::DrumFrame frame_;
   film::FilmSectionGrid grid_;
