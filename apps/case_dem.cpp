@@ -109,6 +109,7 @@ DemCase read_dem_case(yaml::MapReader root) {
   c.run.progress_interval = run.number("progress_interval", 0.0, Range::non_negative(), "s");
   c.run.flow_window_turns = run.number("flow_window_turns", 5.0, Range::positive(), "turns");
   c.run.steady_tolerance = run.number("steady_tolerance", 0.05, Range::open_closed(0.0, 1.0));
+  c.run.checkpoint_interval = run.number("checkpoint_interval", 300.0, Range::non_negative(), "s of wall time (0 = off)");
   run.finish();
 
   auto samp = root.child("sampling");

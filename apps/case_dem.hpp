@@ -13,6 +13,7 @@ struct DemRunSpec {
   double progress_interval = 0.0; // s of wall time between progress lines (0 = auto)
   double flow_window_turns = 5.0; // turns over which inlet/outlet mass flows are averaged
   double steady_tolerance = 0.05; // steady: |outlet - inlet| <= this x inlet over the window
+  double checkpoint_interval = 300.0;  // s of wall time between DIR/checkpoint.h5 writes (0 = off)
 };
 
 struct DemSamplingSpec {

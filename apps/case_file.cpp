@@ -2,8 +2,9 @@
 
 namespace centrec::cli {
 
-CaseFile read_case_file(const std::string& path) {
-  auto root = yaml::MapReader::from_file(path);
+namespace {
+
+CaseFile read_case(yaml::MapReader root, const std::string& path) {
   CaseFile c;
   c.path = path;
   c.title = root.string("title", "");
@@ -19,6 +20,14 @@ CaseFile read_case_file(const std::string& path) {
   root.finish();
   c.resolved_yaml = root.resolved_text();
   return c;
+}
+
+}  // namespace
+
+CaseFile read_case_file(const std::string& path) { return read_case(yaml::MapReader::from_file(path), path); }
+
+CaseFile read_case_text(const std::string& text, const std::string& path) {
+  return read_case(yaml::MapReader::from_string(text, path), path);
 }
 
 }  // namespace centrec::cli

@@ -21,5 +21,8 @@ struct CaseFile {
 
 // Reads and checks every section; throws yaml::ConfigError on the first problem.
 CaseFile read_case_file(const std::string& path);
+// The same from YAML text (a checkpoint's resolved configuration); `path` names the case
+// in messages and anchors its relative paths.
+CaseFile read_case_text(const std::string& text, const std::string& path);
 
 }  // namespace centrec::cli

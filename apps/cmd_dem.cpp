@@ -1,10 +1,13 @@
 // `centrec dem CASE.yaml --out DIR`: a DEM-only run of the CentRec scene.
+#include <chrono>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <stdexcept>
 
 #include "atomic_write.hpp"
 #include "case_file.hpp"
+#include "checkpoint_h5.hpp"
 #include "commands.hpp"
 #include "dem/scene/centrec_scene.hpp"
 #include "dem/scene/scene_sampler.hpp"
@@ -16,19 +19,25 @@ namespace centrec::cli {
 namespace {
 
 struct DemOptions {
-  std::string case_path, out_dir = "out/dem";
+  std::string case_path, out_dir = "out/dem", resume_dir;
   int threads = -1;         // -1 = from the case
   double duration = -1.0;   // -1 = from the case
 };
 
 void print_dem_help() {
   std::printf(
-      "usage: centrec dem CASE.yaml [--out DIR] [--threads N] [--duration SECONDS]\n\n"
+      "usage: centrec dem CASE.yaml [--out DIR] [--threads N] [--duration SECONDS]\n"
+      "       centrec dem --resume DIR [--threads N]\n\n"
       "Runs the DEM of the CentRec drum (or periodic slice) described by the case's\n"
       "`dem:` section and writes DIR/summary.json (headline figures and the resolved\n"
       "configuration), DIR/dem.h5 (mass flows, averaged film fields, particle snapshots;\n"
       "units as attributes), DIR/dem.xmf (open in ParaView) and DIR/mass_flow.csv.\n"
-      "--threads and --duration override run.threads and run.duration.\n");
+      "--threads and --duration override run.threads and run.duration.\n\n"
+      "Every run.checkpoint_interval seconds of wall time (default 300; 0 = off) and at the\n"
+      "end the run writes DIR/checkpoint.h5 (atomically). --resume DIR continues a killed\n"
+      "run from it with the case stored there (a CASE.yaml given too must match it); the\n"
+      "result is bitwise the same as the uninterrupted run's. A killed sampling turn is\n"
+      "sampled again from its start.\n");
 }
 
 DemOptions parse(const Args& args) {
@@ -40,13 +49,19 @@ DemOptions parse(const Args& args) {
       return args[++i];
     };
     if (a == "--out") o.out_dir = value("--out");
+    else if (a == "--resume") o.resume_dir = value("--resume");
     else if (a == "--threads") o.threads = std::stoi(value("--threads"));
     else if (a == "--duration") o.duration = std::stod(value("--duration"));
     else if (!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
     else if (o.case_path.empty()) o.case_path = a;
     else throw std::invalid_argument("more than one case file given");
   }
-  if (o.case_path.empty()) throw std::invalid_argument("no case file given (centrec dem --help)");
+  if (!o.resume_dir.empty()) {
+    if (o.duration > 0.0) throw std::invalid_argument("--duration cannot change a resumed run (it is in the checkpoint's case)");
+    o.out_dir = o.resume_dir;
+  }
+  if (o.case_path.empty() && o.resume_dir.empty())
+    throw std::invalid_argument("no case file given (centrec dem --help)");
   return o;
 }
 
@@ -58,25 +73,35 @@ int cmd_dem(const Args& args) {
     return 0;
   }
   const DemOptions opt = parse(args);
-  const CaseFile cf = read_case_file(opt.case_path);
-  if (!cf.dem) throw std::invalid_argument(opt.case_path + " has no `dem:` section");
+  // A resumed run takes its case from the checkpoint (a case file given too must match).
+  std::optional<RunCheckpoint> ck;
+  if (!opt.resume_dir.empty()) ck = read_checkpoint(opt.resume_dir);
+  const CaseFile cf = ck ? read_case_text(ck->resolved_yaml, ck->case_path) : read_case_file(opt.case_path);
+  if (ck && !opt.case_path.empty() && read_case_file(opt.case_path).resolved_yaml != ck->resolved_yaml)
+    throw std::invalid_argument(opt.case_path + " does not match the case stored in " + checkpoint_path(opt.resume_dir) +
+                                "; resume without the case file, or start a new run");
+  if (ck && ck->code_version != CENTREC_VERSION)
+    std::fprintf(stderr, "centrec dem: warning: checkpoint written by %s, resuming with %s\n", ck->code_version.c_str(),
+                 CENTREC_VERSION);
+  if (!cf.dem) throw std::invalid_argument(cf.path + " has no `dem:` section");
   DemCase dc = *cf.dem;
   if (opt.threads >= 0) dc.scene.threads = opt.threads;
   if (opt.duration > 0.0) dc.run.duration = opt.duration;
   ensure_directory(opt.out_dir);
 
-  dem::scene::CentrecScene scene(dc.scene);
+  dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(dc.scene);
   auto& sim = scene.simulation();
-  std::fprintf(stderr, "centrec dem: %s\n  %s\n  dt = %.3g s, %lld glued + %lld free particles, %d thread(s)\n",
-               cf.path.c_str(), sim.time_step_advice().report().c_str(), sim.dt(),
-               static_cast<long long>(scene.glued_particles()), static_cast<long long>(scene.free_particles()),
-               sim.threads());
+  std::fprintf(stderr, "centrec dem: %s%s\n  %s\n  dt = %.3g s, %lld glued + %lld free particles, %d thread(s)\n",
+               cf.path.c_str(), ck ? (" resumed at t = " + std::to_string(sim.time()) + " s (" + ck->phase + ")").c_str() : "",
+               sim.time_step_advice().report().c_str(), sim.dt(), static_cast<long long>(scene.glued_particles()),
+               static_cast<long long>(scene.free_particles()), sim.threads());
 
   const double period = scene.turn_period();
   const double total = dc.run.duration + dc.sampling.turns * period;
   ProgressMeter progress(total, dc.run.progress_interval);
   const double chunk = std::max(sim.dt() * scene.steps_per_batch(), std::min(0.01, dc.run.duration));
-  double particle_steps = 0.0;
+  const double steps_before = ck ? ck->particle_steps : 0.0, wall_before = ck ? ck->wall_time : 0.0;
+  double particle_steps = 0.0;  // this process's
   auto advance = [&](auto&& body) {
     const std::int64_t s0 = sim.step_count();
     const double n0 = static_cast<double>(sim.size());
@@ -84,23 +109,68 @@ int cmd_dem(const Args& args) {
     particle_steps += 0.5 * (n0 + static_cast<double>(sim.size())) * static_cast<double>(sim.step_count() - s0);
     progress.update(sim.time(), sim.time() / period, particle_steps);
   };
-  // Spin-up (filling, reaching steady state), then sampling turn by turn.
-  while (sim.time() < dc.run.duration - 0.5 * sim.dt())
-    advance([&] { scene.advance(std::min(chunk, dc.run.duration - sim.time())); });
+
+  // Checkpoints. The run rebuilds the neighbour lists at fixed points (after every spin-up
+  // chunk and every sampled turn) and checkpoints only there, so whether and when a
+  // checkpoint is written (wall clock) never changes the result, and a resumed run
+  // continues bitwise (Simulation::rebuild_lists).
   dem::scene::SceneSampler sampler(scene, dc.sampling.sampler);
   std::vector<NamedSnapshot> snapshots;
-  auto keep_snapshot = [&] {
-    char name[32];
-    std::snprintf(name, sizeof name, "t%.6f", sim.time());
-    snapshots.push_back({name, dem::scene::take_snapshot(sim)});
+  int sampled = ck ? ck->sampled_turns : 0;
+  auto checkpoint_at = std::chrono::steady_clock::now();
+  auto checkpoint = [&](const std::string& phase, bool force) {
+    const auto now = std::chrono::steady_clock::now();
+    const double since = std::chrono::duration<double>(now - checkpoint_at).count();
+    if (!force && !(dc.run.checkpoint_interval > 0.0 && since >= dc.run.checkpoint_interval)) return;
+    RunCheckpoint c;
+    c.code_version = CENTREC_VERSION;
+    c.case_path = cf.path;
+    c.resolved_yaml = cf.resolved_yaml;
+    c.phase = phase;
+    c.sampled_turns = sampled;
+    c.particle_steps = steps_before + particle_steps;
+    c.wall_time = wall_before + progress.elapsed();
+    c.scene = scene.export_state();
+    if (phase != "spin-up") {
+      c.sampler["state"] = sampler.save();
+      c.start_snapshot = snapshots.front().data;
+    }
+    write_checkpoint(opt.out_dir, c);
+    checkpoint_at = std::chrono::steady_clock::now();
   };
-  keep_snapshot();  // the film as sampling starts
-  for (int t = 0; t < static_cast<int>(std::floor(dc.sampling.turns + 1e-9)); ++t)
+
+  // Spin-up (filling, reaching steady state), then sampling turn by turn.
+  if (!ck || ck->phase == "spin-up") {
+    while (sim.time() < dc.run.duration - 0.5 * sim.dt()) {
+      advance([&] { scene.advance(std::min(chunk, dc.run.duration - sim.time())); });
+      sim.rebuild_lists();
+      checkpoint("spin-up", false);
+    }
+  }
+  auto keep = [&](dem::scene::SnapshotArrays s) {
+    char name[32];
+    std::snprintf(name, sizeof name, "t%.6f", s.time);
+    snapshots.push_back({name, std::move(s)});
+  };
+  auto keep_snapshot = [&] { keep(dem::scene::take_snapshot(sim)); };
+  if (ck && ck->phase != "spin-up") {
+    sampler.load(ck->sampler.at("state"));
+    keep(ck->start_snapshot.value());
+  } else {
+    keep_snapshot();  // the film as sampling starts
+  }
+  while (sampled < static_cast<int>(std::floor(dc.sampling.turns + 1e-9))) {
     advance([&] { sampler.sample_turns(scene, 1.0); });
+    ++sampled;
+    sim.rebuild_lists();
+    checkpoint("sampling", false);
+  }
   if (sim.time() > snapshots.back().data.time) keep_snapshot();
   progress.update(sim.time(), sim.time() / period, particle_steps, true);
   progress.finish();
-  const double wall = progress.elapsed();
+  checkpoint("done", dc.run.checkpoint_interval > 0.0);
+  particle_steps += steps_before;
+  const double wall = wall_before + progress.elapsed();
 
   DemRunResult r;
   r.engine = "centrec";

@@ -247,7 +247,7 @@ TimeStepAdvice Simulation::time_step_advice() const {
 
 double Simulation::dt() const { return dt_; }
 
-void Simulation::setup() {
+void Simulation::resolve_time_step() {
   if (x_.empty() && cfg_.dt == 0.0)
     throw std::invalid_argument("setup: no particles to advise a time step from; add particles or set dt");
   if (!x_.empty()) {
@@ -281,9 +281,21 @@ void Simulation::setup() {
   } else {
     dt_ = cfg_.dt;
   }
+}
+
+void Simulation::setup() {
+  resolve_time_step();
   rebuild();
   compute_forces(false);  // as LIGGGHTS set-up: forces without advancing the history
   ready_ = true;
+}
+
+void Simulation::rebuild_lists() {
+  if (!ready_) {
+    setup();
+    return;
+  }
+  rebuild();
 }
 
 void Simulation::rebuild() {

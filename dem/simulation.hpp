@@ -25,6 +25,7 @@
 #include "dem/contact_history.hpp"
 #include "dem/material.hpp"
 #include "dem/motion.hpp"
+#include "dem/simulation_state.hpp"
 #include "dem/timestep_advisor.hpp"
 #include "dem/vec3.hpp"
 #include "dem/walls.hpp"
@@ -147,9 +148,23 @@ class Simulation {
   // Contact history with a wall (tests: history survives rebuilds/sorting).
   const ContactHistory& wall_history(std::size_t index, int wall) const;
 
+  // Checkpoints (dem/simulation_state.hpp). The force sums depend on the particle order
+  // and the neighbour list, both set at the last rebuild; so rebuild_lists() forces a
+  // rebuild (spatial re-sort + list) now, between steps, and a run calls it right before
+  // export_state(). import_state() ends with the same rebuild on the same particles in
+  // the same order, so the resumed run continues bitwise identically to the run that
+  // wrote the state (which, having rebuilt at that moment too, is the reference run).
+  void rebuild_lists();
+  SimulationState export_state() const;
+  // Replaces every particle, contact history, the clock and the time step. The engine
+  // must already hold the same materials, interactions and walls (as the scene builds
+  // them from its config): a difference is refused with std::invalid_argument.
+  void import_state(const SimulationState& s);
+
  private:
   struct Impl;  // neighbour lists, histories, scratch
   void rebuild();
+  void resolve_time_step();  // dt_ and the blow-up limit from the advice (setup's first half)
   void compute_forces(bool update_history);
   double integrate_first_half();  // returns the largest squared displacement since the last build
   void integrate_second_half();

@@ -72,4 +72,23 @@ std::vector<DispersionBin> DispersionEstimator::result() const {
   return out;
 }
 
+void DispersionEstimator::save(PackedState& out) const {
+  out.put(tau_);
+  out.put_all(sum_);
+  out.put_all(sum2_);
+  out.put_all(n_);
+  out.put_all(per_pair_);
+}
+
+void DispersionEstimator::load(StateReader& in) {
+  const std::size_t bins = sum_.size();
+  tau_ = in.get();
+  in.get_all(sum_);
+  in.get_all(sum2_);
+  in.get_all(n_);
+  in.get_all(per_pair_);
+  if (sum_.size() != bins || sum2_.size() != bins || n_.size() != bins || per_pair_.size() != bins)
+    throw std::invalid_argument("DispersionEstimator: saved state has a different bin count");
+}
+
 }  // namespace centrec::film

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "dem/film/drum_frame.hpp"
+#include "dem/film/packed_state.hpp"
 #include "dem/film/particle_arrays.hpp"
 #include "dem/film/running_stats.hpp"
 #include "dem/film/wall_distance_bins.hpp"
@@ -41,6 +42,8 @@ class DispersionEstimator {
   void add_pair(const ParticleArrays& start, const ParticleArrays& end);
   double lag() const { return tau_; }
   std::vector<DispersionBin> result() const;
+  void save(PackedState& out) const;  // checkpoints (dem/film/packed_state.hpp)
+  void load(StateReader& in);         // into a sampler built with the same config
 
  private:
   DrumFrame frame_;

@@ -159,4 +159,29 @@ std::vector<double> FilmThicknessAccumulator::surface_velocity(int axial_lo, int
   return v;
 }
 
+void FilmThicknessAccumulator::save(PackedState& out) const {
+  out.put(n_ax_);
+  out.put(n_tan_);
+  out.put(static_cast<double>(snapshots_));
+  out.put(d_);
+  out.put(overall_);
+  out.put_all(ring_);
+  out.put_all(cell_);
+  out.put_all(vz_);
+}
+
+void FilmThicknessAccumulator::load(StateReader& in) {
+  n_ax_ = static_cast<int>(in.count());
+  n_tan_ = static_cast<int>(in.count());
+  snapshots_ = in.count();
+  d_ = in.stats();
+  overall_ = in.stats();
+  in.get_all(ring_);
+  in.get_all(cell_);
+  in.get_all(vz_);
+  if (ring_.size() != static_cast<std::size_t>(n_ax_) || cell_.size() != static_cast<std::size_t>(n_ax_) * n_tan_ ||
+      vz_.size() != cell_.size())
+    throw std::invalid_argument("FilmThicknessAccumulator: saved state is inconsistent");
+}
+
 }  // namespace centrec::film

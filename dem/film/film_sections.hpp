@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dem/film/drum_frame.hpp"
+#include "dem/film/packed_state.hpp"
 #include "dem/film/film_thickness.hpp"
 #include "dem/film/particle_arrays.hpp"
 #include "dem/film/running_stats.hpp"
@@ -58,6 +59,8 @@ class FilmThicknessAccumulator {
   // sections [axial_lo, axial_hi); input to zone detection.
   std::vector<double> surface_velocity(int axial_lo, int axial_hi) const;
   const RunningStats& surface_velocity_cell(int axial, int tangential) const;
+  void save(PackedState& out) const;  // checkpoints (dem/film/packed_state.hpp)
+  void load(StateReader& in);         // into a sampler built with the same config
 
  private:
   LengthStat to_length(const RunningStats& s) const;

@@ -1,5 +1,8 @@
 #include "period_profile.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace centrec::film {
 
 void PeriodProfile::end_period() {
@@ -11,6 +14,24 @@ void PeriodProfile::end_period() {
     sum_[k] = 0.0;
     n_[k] = 0;
   }
+}
+
+void PeriodProfile::save(PackedState& out) const {
+  out.put_all(sum_);
+  out.put_all(n_);
+  out.put_all(stats_);
+  out.put_all(total_);
+}
+
+void PeriodProfile::load(StateReader& in) {
+  const std::size_t bins = sum_.size();
+  in.get_all(sum_);
+  in.get_all(n_);
+  in.get_all(stats_);
+  in.get_all(total_);
+  if (sum_.size() != bins || n_.size() != bins || stats_.size() != bins || total_.size() != bins)
+    throw std::invalid_argument("PeriodProfile: saved state has " + std::to_string(sum_.size()) + " bins, not " +
+                                std::to_string(bins));
 }
 
 ProfileBin PeriodProfile::bin(int k) const {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "dem/film/packed_state.hpp"
 #include "dem/film/running_stats.hpp"
 
 namespace centrec::film {
@@ -29,6 +30,8 @@ class PeriodProfile {
   void end_period();
   ProfileBin bin(int k) const;
   std::vector<ProfileBin> all() const;
+  void save(PackedState& out) const;  // checkpoints
+  void load(StateReader& in);
 
  private:
   std::vector<double> sum_;

@@ -16,6 +16,16 @@ class RunningStats {
     m2_ += delta * (v - mean_);
   }
   std::size_t count() const { return n_; }
+  // Raw Welford state, for checkpoints (dem/film/packed_state.hpp).
+  double raw_mean() const { return mean_; }
+  double raw_m2() const { return m2_; }
+  static RunningStats restore(std::size_t n, double mean, double m2) {
+    RunningStats s;
+    s.n_ = n;
+    s.mean_ = mean;
+    s.m2_ = m2;
+    return s;
+  }
   // NaN when empty, so an unsampled bin cannot pass for a zero.
   double mean() const { return n_ ? mean_ : std::numeric_limits<double>::quiet_NaN(); }
   // Sample standard deviation (n - 1); 0 for a single sample, NaN when empty.

@@ -68,4 +68,12 @@ std::vector<ProfileBin> SolidFractionSampler::profile(int zone) const {
   return profiles_.at(zone).all();
 }
 
+void SolidFractionSampler::save(PackedState& out) const {
+  for (const auto& pr : profiles_) pr.save(out);
+}
+
+void SolidFractionSampler::load(StateReader& in) {
+  for (auto& pr : profiles_) pr.load(in);
+}
+
 }  // namespace centrec::film

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "dem/film/drum_frame.hpp"
+#include "dem/film/packed_state.hpp"
 #include "dem/film/particle_arrays.hpp"
 #include "dem/film/period_profile.hpp"
 #include "dem/film/wall_distance_bins.hpp"
@@ -39,6 +40,8 @@ class SolidFractionSampler {
   const SolidFractionConfig& config() const { return config_; }
   // Profile of one zone: bin k at wall distance config().bins.centre_d(k).
   std::vector<ProfileBin> profile(int zone) const;
+  void save(PackedState& out) const;  // checkpoints (dem/film/packed_state.hpp)
+  void load(StateReader& in);         // into a sampler built with the same config
 
  private:
   DrumFrame frame_;

@@ -48,4 +48,14 @@ std::vector<ProfileBin> VelocityProfileSampler::profile(int section) const {
   return profiles_.at(section).all();
 }
 
+void VelocityProfileSampler::save(PackedState& out) const {
+  out.put(static_cast<double>(periods_));
+  for (const auto& pr : profiles_) pr.save(out);
+}
+
+void VelocityProfileSampler::load(StateReader& in) {
+  periods_ = in.count();
+  for (auto& pr : profiles_) pr.load(in);
+}
+
 }  // namespace centrec::film

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dem/film/drum_frame.hpp"
+#include "dem/film/packed_state.hpp"
 #include "dem/film/particle_arrays.hpp"
 #include "dem/film/period_profile.hpp"
 #include "dem/film/wall_distance_bins.hpp"
@@ -40,6 +41,8 @@ class VelocityProfileSampler {
   const VelocityProfileConfig& config() const { return config_; }
   // Profile of one section: bin k at wall distance config().bins.centre_d(k).
   std::vector<ProfileBin> profile(int section) const;
+  void save(PackedState& out) const;  // checkpoints (dem/film/packed_state.hpp)
+  void load(StateReader& in);         // into a sampler built with the same config
 
  private:
   DrumFrame frame_;

@@ -60,7 +60,7 @@ void check(const SceneConfig& c) {
 
 }  // namespace
 
-CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
+void CentrecScene::build_engine() {
   check(cfg_);
   sim_ = std::make_unique<Simulation>(engine_config(cfg_));
   // The engine's default material 0 stays unused; the scene adds its particles and wall.
@@ -71,6 +71,38 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
   particle_material_ = p;
   wall_material_ = w;
   build_walls();
+}
+
+CentrecScene::CentrecScene(const SceneConfig& config, const SceneState& state) : cfg_(config) {
+  build_engine();
+  const bool fed = cfg_.feeder.enabled && !cfg_.slice.enabled;
+  if (state.has_feeder != fed) throw std::invalid_argument("checkpoint: the feeder setting differs from the case");
+  if (fed) {
+    feeder_ = std::make_unique<Feeder>(cfg_, cfg_.seed);
+    feeder_->restore(state.feeder);
+  }
+  sim_->import_state(state.engine);
+  for (Motion m : sim_->motions()) glued_ += (m == Motion::drum);
+  steps_per_batch_ = std::max<std::int64_t>(1, std::llround(cfg_.feeder.interval / sim_->dt()));
+  log_ = state.mass_flow_log;
+  out_total_ = state.out_total;
+  lost_total_ = state.lost_total;
+}
+
+SceneState CentrecScene::export_state() const {
+  SceneState s;
+  s.engine = sim_->export_state();
+  s.has_feeder = feeder_ != nullptr;
+  if (feeder_) s.feeder = feeder_->state();
+  s.mass_flow_log = log_;
+  s.out_total = out_total_;
+  s.lost_total = lost_total_;
+  return s;
+}
+
+CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
+  build_engine();
+  const int p = particle_material_;
 
   const double R = drum_radius();
   const bool periodic = cfg_.slice.enabled;

@@ -29,9 +29,24 @@ Vec3 scene_gravity(const SceneConfig& c);
 // Seconds per drum revolution.
 inline double turn_period(const SceneConfig& c) { return 2.0 * M_PI / std::fabs(c.drum.omega); }
 
+// The scene's dynamic state (checkpoints): the engine's plus what the scene carries.
+struct SceneState {
+  SimulationState engine;
+  bool has_feeder = false;
+  FeederState feeder;
+  std::vector<MassFlowSample> mass_flow_log;
+  double out_total = 0.0, lost_total = 0.0;  // kg
+};
+
 class CentrecScene {
  public:
   explicit CentrecScene(const SceneConfig& config);
+  // Resumes a scene from a checkpoint taken of one built from the same config (the
+  // starting film is not rebuilt; the engine refuses a state that does not fit).
+  CentrecScene(const SceneConfig& config, const SceneState& state);
+  // See Simulation::rebuild_lists(): call simulation().rebuild_lists() first for a
+  // checkpoint a resumed run continues from bitwise.
+  SceneState export_state() const;
 
   // Advance by `duration` seconds in feeder batches (the duration is rounded to whole steps).
   void advance(double duration);
@@ -50,6 +65,7 @@ class CentrecScene {
   double holdup_mass() const;  // kg of free particles
 
  private:
+  void build_engine();  // checks the config, creates the engine, its materials and walls
   void build_walls();
   void record(double out_mass, double lost_mass);
 

@@ -1,6 +1,8 @@
 #include "dem/scene/feeder.hpp"
 
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
 #include <vector>
 
 #include "dem/sphere_mass.hpp"
@@ -10,6 +12,28 @@ namespace centrec::dem::scene {
 Feeder::Feeder(const SceneConfig& config, std::uint64_t seed)
     : cfg_(config), sizes_(config.particle, seed), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {
   next_diameter_ = sizes_.next_diameter();
+}
+
+FeederState Feeder::state() const {
+  FeederState s;
+  s.size_rng = sizes_.rng_state();
+  std::ostringstream out;
+  out << rng_;
+  s.place_rng = out.str();
+  s.backlog = backlog_;
+  s.next_diameter = next_diameter_;
+  s.stats = stats_;
+  return s;
+}
+
+void Feeder::restore(const FeederState& s) {
+  sizes_.set_rng_state(s.size_rng);
+  std::istringstream in(s.place_rng);
+  in >> rng_;
+  if (in.fail()) throw std::invalid_argument("feeder: unreadable generator state");
+  backlog_ = s.backlog;
+  next_diameter_ = s.next_diameter;
+  stats_ = s.stats;
 }
 
 double Feeder::feed(Simulation& sim, double elapsed) {

@@ -4,6 +4,7 @@
 // speed omega R and no axial velocity, at a mass flow rate; never overlapping.
 #include <cstdint>
 #include <random>
+#include <string>
 
 #include "dem/scene/scene_config.hpp"
 #include "dem/scene/size_distribution.hpp"
@@ -18,12 +19,22 @@ struct FeederStats {
   double requested_mass = 0.0;       // kg the target rate asked for so far
 };
 
+// Everything the feeder carries from one batch to the next (checkpoints).
+struct FeederState {
+  std::string size_rng, place_rng;  // generator states (std::mt19937_64 stream format)
+  double backlog = 0.0;             // kg
+  double next_diameter = 0.0;       // m
+  FeederStats stats;
+};
+
 class Feeder {
  public:
   Feeder(const SceneConfig& config, std::uint64_t seed);
   // Inserts the mass due over `elapsed` seconds (plus any backlog); returns the mass inserted.
   double feed(Simulation& sim, double elapsed);
   const FeederStats& stats() const { return stats_; }
+  FeederState state() const;
+  void restore(const FeederState& s);
 
  private:
   SceneConfig cfg_;

@@ -144,4 +144,42 @@ FilmFields SceneSampler::fields() const {
   return f;
 }
 
+std::vector<double> SceneSampler::save() const {
+  film::PackedState out;
+  out.put(static_cast<double>(turns_));
+  out.put(static_cast<double>(snapshots_));
+  thickness_.save(out);
+  velocity_->save(out);
+  solid_->save(out);
+  dispersion_->save(out);
+  out.put(previous_ ? 1.0 : 0.0);
+  if (previous_) {
+    out.put(previous_->time);
+    for (const auto* c : {&previous_->x, &previous_->y, &previous_->z, &previous_->vx, &previous_->vy, &previous_->vz,
+                          &previous_->radius})
+      out.put_all(*c);
+    out.put_all(previous_->id);
+  }
+  return out.data;
+}
+
+void SceneSampler::load(const std::vector<double>& state) {
+  film::StateReader in(state, "scene sampler");
+  turns_ = in.count();
+  snapshots_ = in.count();
+  thickness_.load(in);
+  velocity_->load(in);
+  solid_->load(in);
+  dispersion_->load(in);
+  previous_.reset();
+  if (in.get() != 0.0) {
+    SnapshotArrays s;
+    s.time = in.get();
+    for (auto* c : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.radius}) in.get_all(*c);
+    in.get_all(s.id);
+    previous_ = std::move(s);
+  }
+  in.finish();
+}
+
 }  // namespace centrec::dem::scene

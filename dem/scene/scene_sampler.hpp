@@ -59,6 +59,11 @@ class SceneSampler {
   FilmFields fields() const;
   const film::DrumFrame& frame() const { return frame_; }
   const SamplingSpec& spec() const { return spec_; }
+  // Checkpoints: every accumulator and the last snapshot (the dispersion estimator pairs
+  // it with the next one) as one array; load() into a sampler built for the same scene
+  // and spec continues exactly where save() left off.
+  std::vector<double> save() const;
+  void load(const std::vector<double>& state);
 
  private:
   SamplingSpec spec_;

@@ -1,6 +1,7 @@
 #include "dem/scene/size_distribution.hpp"
 
 #include <algorithm>
+#include <sstream>
 #include <stdexcept>
 
 namespace centrec::dem::scene {
@@ -9,6 +10,18 @@ SizeSampler::SizeSampler(const ParticleSpec& spec, std::uint64_t seed) : spec_(s
   if (!(spec.diameter > 0.0)) throw std::invalid_argument("particle diameter must be positive");
   if (spec.relative_spread < 0.0 || spec.relative_spread >= 0.3)
     throw std::invalid_argument("particle relative_spread must be in [0, 0.3)");
+}
+
+std::string SizeSampler::rng_state() const {
+  std::ostringstream out;
+  out << rng_;
+  return out.str();
+}
+
+void SizeSampler::set_rng_state(const std::string& text) {
+  std::istringstream in(text);
+  in >> rng_;
+  if (in.fail()) throw std::invalid_argument("size sampler: unreadable generator state");
 }
 
 double SizeSampler::max_diameter() const {

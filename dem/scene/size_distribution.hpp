@@ -1,6 +1,7 @@
 #pragma once
 // Particle sizes drawn from the scene's distribution (mono, uniform, truncated normal).
 #include <random>
+#include <string>
 
 #include "dem/scene/scene_config.hpp"
 
@@ -11,6 +12,9 @@ class SizeSampler {
   SizeSampler(const ParticleSpec& spec, std::uint64_t seed);
   double next_diameter();
   double max_diameter() const;
+  // The generator's state as text (std::mt19937_64 stream format), for checkpoints.
+  std::string rng_state() const;
+  void set_rng_state(const std::string& text);  // throws std::invalid_argument if unreadable
 
  private:
   ParticleSpec spec_;

@@ -16,11 +16,14 @@
 #include "case_thermal.hpp"
 #include "film_field_h5.hpp"
 #include "h5_file.hpp"
+#include "tests/test_case_dir.hpp"
 #include "thermal/analytic_film.hpp"
 #include "thermal_case_run.hpp"
 
 using namespace centrec;
 using namespace centrec::cli;
+using centrec::testing::temp_dir;
+using centrec::testing::write_case;
 
 namespace {
 const char* kCase = R"(title: small
@@ -31,18 +34,6 @@ thermal:
   T_in: 873.15
   flux: {q: 1.0e6}
 )";
-
-std::string temp_dir(const std::string& name) {
-  const auto p = std::filesystem::temp_directory_path() / ("centrec_test_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(p);
-  return p.string();
-}
-
-std::string write_case(const std::string& dir, const std::string& text) {
-  const std::string path = dir + "/case.yaml";
-  std::ofstream(path) << text;
-  return path;
-}
 
 std::string config_error(const std::string& dir, const std::string& text) {
   try {
