@@ -10,13 +10,19 @@ CaseFile read_case(yaml::MapReader root, const std::string& path) {
   c.title = root.string("title", "");
   root.string("description", "");
   if (root.has("dem")) c.dem = read_dem_case(root.child("dem"));
+  if (root.has("receiver")) {
+    if (!c.dem) root.fail("receiver", "a receiver is simulated through a scaled-down `dem:` section; add one");
+    c.receiver = read_receiver(root.child("receiver"), root.child("dem"));
+  }
   if (root.has("film") || root.has("thermal")) {
     ThermalCase t;
     t.path = path;
     t.title = c.title;
-    read_thermal_sections(root, case_directory(path), t);
+    // In a coupled case (with `dem:`) the film comes from the DEM, so `film:` is optional.
+    read_thermal_sections(root, case_directory(path), t, c.dem.has_value());
     c.thermal = std::move(t);
   }
+  if (root.has("sweep")) c.sweep = read_sweep(root.child("sweep"));
   root.finish();
   c.resolved_yaml = root.resolved_text();
   return c;

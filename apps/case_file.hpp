@@ -6,6 +6,8 @@
 #include <string>
 
 #include "case_dem.hpp"
+#include "case_receiver.hpp"
+#include "case_sweep.hpp"
 #include "case_thermal.hpp"
 #include "strict_yaml.hpp"
 
@@ -14,8 +16,10 @@ namespace centrec::cli {
 struct CaseFile {
   std::string path;
   std::string title;
-  std::optional<DemCase> dem;
-  std::optional<ThermalCase> thermal;  // `film` + `thermal` sections
+  std::optional<DemCase> dem;            // as given, before any receiver derivation
+  std::optional<ReceiverCase> receiver;  // the actual receiver of a coupled run (needs `dem`)
+  std::optional<ThermalCase> thermal;  // `film` + `thermal` sections (film from the DEM if absent)
+  std::optional<SweepSpec> sweep;        // the operating window of `centrec sweep`
   std::string resolved_yaml;  // the fully resolved configuration, echoed into outputs
 };
 

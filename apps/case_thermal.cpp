@@ -1,5 +1,6 @@
 #include "case_thermal.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "film_field_h5.hpp"
@@ -62,6 +63,9 @@ void read_film(MapReader r, const std::string& case_dir, double particle_d, Ther
     }
     if (!(c.film.length > 0.0) || !(c.film.drum_diameter > 0.0))
       r.fail("file", path + ": the film field needs positive 'length' and 'drum_diameter' attributes");
+    if (c.film.particle_diameter > 0.0 && std::abs(c.film.particle_diameter / particle_d - 1.0) > 1e-6)
+      r.fail("file", path + ": the film field is for particles of d = " + std::to_string(c.film.particle_diameter) +
+                         " m but thermal.material.d = " + std::to_string(particle_d) + " m (mismatched film file)");
     c.film_source = path;
   }
   r.finish();
@@ -145,11 +149,14 @@ void read_solver(MapReader r, ThermalCase& c) {
 }
 }  // namespace
 
-void read_thermal_sections(MapReader& root, const std::string& case_dir, ThermalCase& c) {
+void read_thermal_sections(MapReader& root, const std::string& case_dir, ThermalCase& c, bool film_from_dem) {
   MapReader t = root.child("thermal");
   th::FilmModel& m = c.model;
   m.material = read_material(t.child("material"));
-  read_film(root.child("film"), case_dir, m.material.d, c);
+  if (film_from_dem && !root.has("film"))
+    c.film_source = "dem";
+  else
+    read_film(root.child("film"), case_dir, m.material.d, c);
 
   const std::string model = t.choice("model", "2d", {"2d", "1d"});
   c.grid.lumped = model == "1d";

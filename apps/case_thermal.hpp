@@ -26,7 +26,10 @@ struct ThermalCase {
 };
 
 // Reads the sections `film` and `thermal` from a root reader (shared by other case readers).
-void read_thermal_sections(yaml::MapReader& root, const std::string& case_dir, ThermalCase& c);
+// With film_from_dem, a missing `film` section is allowed: the coupled run supplies the film
+// (film_source "dem").
+void read_thermal_sections(yaml::MapReader& root, const std::string& case_dir, ThermalCase& c,
+                           bool film_from_dem = false);
 // Folder of a case file, against which its relative file paths resolve ("" = cwd).
 std::string case_directory(const std::string& case_path);
 // Reads a whole thermal case file; throws yaml::ConfigError on the first problem.

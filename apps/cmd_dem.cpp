@@ -9,6 +9,7 @@
 #include "case_file.hpp"
 #include "checkpoint_h5.hpp"
 #include "commands.hpp"
+#include "dem_case_run.hpp"
 #include "dem/scene/centrec_scene.hpp"
 #include "dem/scene/scene_sampler.hpp"
 #include "dem_run_report.hpp"
@@ -87,7 +88,12 @@ int cmd_dem(const Args& args) {
   DemCase dc = *cf.dem;
   if (opt.threads >= 0) dc.scene.threads = opt.threads;
   if (opt.duration > 0.0) dc.run.duration = opt.duration;
-  ensure_directory(opt.out_dir);
+  run_dem_case(cf, dc, opt.out_dir);
+  return 0;
+}
+
+void run_dem_case(const CaseFile& cf, const DemCase& dc, const std::string& out_dir) {
+  ensure_directory(out_dir);
 
   dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(dc.scene);
   auto& sim = scene.simulation();
@@ -189,8 +195,7 @@ int cmd_dem(const Args& args) {
   r.wall_time = wall;
   r.fields = sampler.fields();
   r.snapshots = std::move(snapshots);
-  write_dem_run_report(opt.out_dir, cf, dc, r);
-  return 0;
+  write_dem_run_report(out_dir, cf, dc, r);
 }
 
 }  // namespace centrec::cli

@@ -60,7 +60,7 @@ H5File H5File::create(const std::string& path) {
 H5File H5File::open_read(const std::string& path) {
   quiet_hdf5();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (id < 0) fail("cannot open file for reading", path);
+  if (id < 0) fail("cannot open file for reading (missing, not HDF5, truncated or corrupted)", path);
   return H5File(id, path, "");
 }
 

@@ -53,6 +53,11 @@ double section_mean(const std::vector<thermal::KeffSection>& k, double thermal::
 
 void write_thermal_h5(const std::string& path, const ThermalCase& c, const ThermalRun& r) {
   io::H5File f = io::H5File::create(path);
+  write_thermal_groups(f, c, r);
+  f.commit();
+}
+
+void write_thermal_groups(io::H5File& f, const ThermalCase& c, const ThermalRun& r) {
   f.set_attribute("/", "centrec_version", CENTREC_VERSION);
   f.set_attribute("/", "config", c.resolved_yaml);
   f.set_attribute("/", "case_file", c.path);
@@ -109,7 +114,6 @@ void write_thermal_h5(const std::string& path, const ThermalCase& c, const Therm
     f.write("/transient/T_final", r.transient.y_end, {nz, nxi}, "K");
   }
   io::write_film_field(f, c.film, "/film");
-  f.commit();
 }
 
 nlohmann::json thermal_summary(const ThermalCase& c, const ThermalRun& r) {

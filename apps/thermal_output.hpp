@@ -6,11 +6,14 @@
 #include <string>
 
 #include "case_thermal.hpp"
+#include "h5_file.hpp"
 #include "thermal_case_run.hpp"
 
 namespace centrec::cli {
 
 void write_thermal_h5(const std::string& path, const ThermalCase& c, const ThermalRun& r);
+// The same content into an open file (root attributes, /grid, /steady, /transient, /film).
+void write_thermal_groups(io::H5File& f, const ThermalCase& c, const ThermalRun& r);
 nlohmann::json thermal_summary(const ThermalCase& c, const ThermalRun& r);
 
 }  // namespace centrec::cli

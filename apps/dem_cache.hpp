@@ -1,0 +1,26 @@
+#pragma once
+// The DEM cache of `centrec run` (issue 5 item 3): a DEM run's outputs are stored under
+// CACHE/<key>/, the key a hash of every DEM input (the resolved `dem:` configuration, the
+// drum and feed the receiver derived, and the code version), so a run whose DEM inputs are
+// unchanged (a thermal-only change) reuses them and reruns in seconds.
+#include <functional>
+#include <string>
+
+#include "case_dem.hpp"
+
+namespace centrec::cli {
+
+// 16 hex digits of FNV-1a 64 over the DEM inputs.
+std::string dem_cache_key(const std::string& resolved_dem_yaml, const DemCase& effective, const std::string& version);
+
+struct CachedDem {
+  std::string dir;  // CACHE/<key>, holding dem.h5 and summary.json
+  bool hit = false;
+};
+
+// Returns CACHE/<key> if it holds a complete run; otherwise calls run(tmp_dir) to produce
+// one in a temporary folder and renames it into place (a killed run leaves no entry).
+CachedDem cached_dem_run(const std::string& cache_dir, const std::string& key,
+                         const std::function<void(const std::string& dir)>& run);
+
+}  // namespace centrec::cli

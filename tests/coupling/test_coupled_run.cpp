@@ -1,0 +1,108 @@
+// End-to-end coupled run (issue 5 item 6): tests/coupling/small_coupled.yaml (the D12
+// receiver, its DEM drum derived by eqs 1-3 at D/d = 21, a short DEM, scaled back up) gives
+// the stored outlet temperature within 1 K; a rerun takes the cached DEM and gives an
+// identical result; a thermal-only change reuses the DEM; the outputs carry the film and the
+// scaling; mismatched particles between DEM and thermal are refused.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "case_file.hpp"
+#include "coupled_output.hpp"
+#include "coupled_run.hpp"
+#include "film_field_h5.hpp"
+#include "h5_file.hpp"
+
+using namespace centrec;
+using namespace centrec::cli;
+namespace fs = std::filesystem;
+
+namespace {
+const std::string kCase = std::string(CENTREC_SOURCE_DIR) + "/tests/coupling/small_coupled.yaml";
+// Stored by the first run of this test (2D, 60 x 12; DEM deterministic at any thread count).
+constexpr double kStoredTout = 1180.77;
+
+std::string tmp_dir() {
+  const fs::path p = fs::temp_directory_path() / ("centrec_coupled_" + std::to_string(::getpid()));
+  fs::create_directories(p);
+  return p.string();
+}
+
+// The case with its text edited (thermal-only or particle changes).
+CaseFile edited_case(const std::string& dir, const std::string& from, const std::string& to) {
+  std::ifstream in(kCase);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos);
+  text.replace(at, from.size(), to);
+  std::ofstream(dir + "/edited.yaml") << text;
+  return read_case_file(dir + "/edited.yaml");
+}
+}  // namespace
+
+TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
+  const std::string dir = tmp_dir();
+  RunOptions o;
+  o.cache_dir = dir + "/cache";
+  const CaseFile cf = read_case_file(kCase);
+  const CoupledRun first = run_coupled_case(cf, o);
+  const double T1 = first.result.balance.T_out;
+  std::printf("T_out %.3f K (stored %.2f K, tolerance 1 K); DEM %.1f s (run), outlet %.4g g/s; k_eff parts: see "
+              "summary\n",
+              T1, kStoredTout, first.dem_seconds, first.averages.mdot * 1e3);
+  EXPECT_FALSE(first.dem_cached);
+  EXPECT_NEAR(T1, kStoredTout, 1.0);
+  EXPECT_NEAR(first.result.balance.mass_flow / first.conservation.mdot, 1.0, 1e-2);
+  EXPECT_LT(first.conservation.max_cylindrical_error, 1e-2);
+  // The receiver derived the DEM drum by eqs 1-3 and the film was scaled back up.
+  EXPECT_NEAR(first.dem.scene.drum.diameter, 21 * 1.2e-3, 1e-12);
+  EXPECT_NEAR(first.scale.radius_ratio, 0.12 / 0.0252, 1e-9);
+  EXPECT_NEAR(first.thermal.film.length, 0.171, 1e-12);
+
+  const CoupledRun again = run_coupled_case(cf, o);
+  std::printf("rerun: cached %d, DEM stage %.3f s, T_out %.6f K\n", again.dem_cached, again.dem_seconds,
+              again.result.balance.T_out);
+  EXPECT_TRUE(again.dem_cached);
+  EXPECT_EQ(again.cache_key, first.cache_key);
+  EXPECT_EQ(again.result.balance.T_out, T1);
+  EXPECT_EQ(again.thermal.film.u, first.thermal.film.u);
+
+  // Thermal-only change: same DEM key, different answer.
+  const CaseFile hotter = edited_case(dir, "q: 2.0e5", "q: 3.0e5");
+  const CoupledRun h = run_coupled_case(hotter, o);
+  std::printf("flux 3e5: cached %d, T_out %.2f K\n", h.dem_cached, h.result.balance.T_out);
+  EXPECT_TRUE(h.dem_cached);
+  EXPECT_GT(h.result.balance.T_out, T1 + 10.0);
+
+  // Outputs: results.h5 with /film and /coupling, film.h5 reusable, summary figures.
+  write_coupled_h5(dir, first);
+  const auto summary = coupled_summary(first);
+  EXPECT_EQ(summary["T_out_K"].get<double>(), T1);
+  EXPECT_TRUE(summary.contains("scaling"));
+  EXPECT_GT(summary["k_eff"]["film_mean"]["k_eff"].get<double>(), 0.0);
+  const auto film = io::read_film_field(io::H5File::open_read(dir + "/film.h5"));
+  EXPECT_EQ(film.u, first.thermal.film.u);
+  const auto res = io::H5File::open_read(dir + "/results.h5");
+  EXPECT_TRUE(res.exists("/coupling/sampled_flux_over_mdot"));
+  EXPECT_TRUE(res.exists("/steady/T"));
+  fs::remove_all(dir);
+}
+
+TEST(CoupledRun, ThermalParticlesMustMatchTheDem) {
+  const std::string dir = tmp_dir();
+  const CaseFile cf = edited_case(dir, "  T_in: 873.15", "  material: {d: 1.0e-3}\n  T_in: 873.15");
+  RunOptions o;
+  o.cache_dir = dir + "/cache";
+  try {
+    run_coupled_case(cf, o);
+    ADD_FAILURE() << "mismatched particles were accepted";
+  } catch (const std::invalid_argument& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("thermal.material.d"), std::string::npos);
+  }
+  EXPECT_FALSE(fs::exists(dir + "/cache"));  // refused before any DEM work
+  fs::remove_all(dir);
+}
