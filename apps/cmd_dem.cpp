@@ -88,11 +88,12 @@ int cmd_dem(const Args& args) {
   DemCase dc = *cf.dem;
   if (opt.threads >= 0) dc.scene.threads = opt.threads;
   if (opt.duration > 0.0) dc.run.duration = opt.duration;
-  run_dem_case(cf, dc, opt.out_dir);
+  run_dem_case(cf, dc, opt.out_dir, ck);
   return 0;
 }
 
-void run_dem_case(const CaseFile& cf, const DemCase& dc, const std::string& out_dir) {
+void run_dem_case(const CaseFile& cf, const DemCase& dc, const std::string& out_dir,
+                  const std::optional<RunCheckpoint>& ck) {
   ensure_directory(out_dir);
 
   dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(dc.scene);
@@ -141,7 +142,7 @@ void run_dem_case(const CaseFile& cf, const DemCase& dc, const std::string& out_
       c.sampler["state"] = sampler.save();
       c.start_snapshot = snapshots.front().data;
     }
-    write_checkpoint(opt.out_dir, c);
+    write_checkpoint(out_dir, c);
     checkpoint_at = std::chrono::steady_clock::now();
   };
 
