@@ -73,7 +73,7 @@ nlohmann::json summary(const CaseFile& cf, const DemCase& dc, const DemRunResult
     j["time_to_steady_state_s"] = ss.steady ? nlohmann::json(ss.time) : nlohmann::json(nullptr);
   }
   j["lost_kg"] = log.empty() ? 0.0 : log.back().lost;
-  j["feeder_deferred_insertions"] = r.feeder_deferred;
+  j["feeder_deferred_insertions"] = r.feeder_deferred >= 0 ? nlohmann::json(r.feeder_deferred) : nlohmann::json(nullptr);
   j["contacts_per_particle"] =
       r.contacts_per_particle >= 0.0 ? nlohmann::json(r.contacts_per_particle) : nlohmann::json(nullptr);
   j["particle_steps_per_s"] = r.wall_time > 0.0 ? r.particle_steps / r.wall_time : 0.0;

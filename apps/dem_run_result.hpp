@@ -27,7 +27,7 @@ struct DemRunResult {
   std::int64_t free_particles = 0, glued_particles = 0;
   double holdup_kg = 0.0;
   std::vector<dem::scene::MassFlowSample> mass_flow;  // cumulative, one entry per batch/dump
-  std::int64_t feeder_deferred = 0;   // feeder insertions postponed for lack of room
+  std::int64_t feeder_deferred = 0;   // feeder insertions postponed for lack of room (< 0: unknown, null)
   double contacts_per_particle = -1.0;  // < 0: the engine did not report it (null in JSON)
   double particle_steps = 0.0;
   double wall_time = 0.0;  // s

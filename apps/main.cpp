@@ -12,6 +12,7 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"dem", "run the DEM of a CentRec drum or periodic slice (DEM-only mode)", cmd_dem},
       {"run", "coupled DEM -> film field -> thermal run: outlet temperature, efficiency, k_eff", cmd_run},
+      {"export-liggghts", "write a LIGGGHTS 3.8 deck (data, STL, input script) for a case's DEM", cmd_export_liggghts},
       {"scale", "scale a receiver to another size by the paper's eqs 1-3 (keeps omega^2 R, mdot/R, L/R)", cmd_scale},
       {"thermal", "solve the film energy equation under solar flux: T_out, efficiency, k_eff", cmd_thermal},
       {"sweep", "operating map: coupled runs over speed x mass flow in parallel processes", cmd_sweep},

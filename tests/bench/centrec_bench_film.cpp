@@ -12,7 +12,7 @@
 #include "tests/bench/bench_options.hpp"
 #include "tests/bench/bench_table.hpp"
 #include "tests/bench/centrec_run.hpp"
-#include "tests/bench/cylinder_stl.hpp"
+#include "liggghts_stl.hpp"
 #include "tests/bench/film_case.hpp"
 #include "tests/bench/film_initial_state.hpp"
 #include "tests/bench/liggghts_deck.hpp"
@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
         const double facet_width = 2.0 * M_PI * c.drum_radius / o.stl_facets;
         int axial = static_cast<int>(std::ceil(s.length / (10.0 * facet_width)));
         axial += axial % 2;
-        const long tris = write_cylinder_stl(lig.deck.stl_file, c.drum_radius, s.length, o.stl_facets, axial);
+        const long tris = centrec::cli::write_cylinder_stl(lig.deck.stl_file, c.drum_radius, s.length, o.stl_facets, axial);
         std::printf("  LIGGGHTS mesh: %ld triangles (%d around x %d along z)\n", tris, o.stl_facets, axial);
       }
       for (int t : o.threads) {

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "liggghts_materials.hpp"
+
 namespace centrec::bench {
 namespace {
 
@@ -63,30 +65,21 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
   // delay 0 with the displacement check = rebuild exactly when needed.
   std::fprintf(f, "neighbor %.9g bin\nneigh_modify delay 0\n", k.skin);
   // Materials: type 1 particles, type 2 the wall (same E, nu); per-pair e, mu, mu_r.
-  const double e = c.restitution;
-  std::fprintf(f,
-               "fix m1 all property/global youngsModulus peratomtype %.9g %.9g\n"
-               "fix m2 all property/global poissonsRatio peratomtype %.9g %.9g\n"
-               "fix m3 all property/global coefficientRestitution peratomtypepair 2 %.9g %.9g %.9g %.9g\n"
-               "fix m4 all property/global coefficientFriction peratomtypepair 2 %.9g %.9g %.9g %.9g\n"
-               "fix m5 all property/global coefficientRollingFriction peratomtypepair 2 %.9g %.9g %.9g %.9g\n",
-               c.youngs_modulus, c.youngs_modulus, c.poisson_ratio, c.poisson_ratio, e, e, e, e, c.friction,
-               c.wall_friction, c.wall_friction, c.wall_friction, c.rolling_friction, c.wall_rolling_friction,
-               c.wall_rolling_friction, c.wall_rolling_friction);
-  std::fprintf(f,
-               "pair_style gran model hertz tangential history rolling_friction epsd2\n"
-               "pair_coeff * *\n"
-               "timestep %.9g\n",
-               c.dt);
+  cli::LiggghtsMaterials m;
+  m.particle_youngs_modulus = m.wall_youngs_modulus = c.youngs_modulus;
+  m.particle_poisson_ratio = m.wall_poisson_ratio = c.poisson_ratio;
+  m.particle_particle = {c.restitution, c.friction, c.rolling_friction};
+  m.particle_wall = {c.restitution, c.wall_friction, c.wall_rolling_friction};
+  std::fputs(cli::liggghts_material_commands(m).c_str(), f);
+  std::fprintf(f, "timestep %.9g\n", c.dt);
   // The wall: a still mesh whose surface moves as if rotating (no mesh motion, no
   // re-binning of triangles each step): LIGGGHTS' cheapest rotating cylinder.
   std::fprintf(f,
                "fix cyl all mesh/surface file %s type 2 surface_ang_vel origin 0 0 0 axis 0 0 1 omega %.17g\n"
-               "fix wall all wall/gran model hertz tangential history rolling_friction epsd2 mesh n_meshes 1 "
-               "meshes cyl\n"
+               "fix wall all wall/gran %s mesh n_meshes 1 meshes cyl\n"
                "fix integ all nve/sphere\n"
                "fix grav all gravity %.17g vector 0 %.17g %.17g\n",
-               k.stl_file.c_str(), W, c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
+               k.stl_file.c_str(), W, cli::liggghts_wall_model(), c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
   // Cheap thermo during the timed runs (printed only at run start and end); lost atoms stop the run.
   std::fprintf(f,
                "thermo_style custom step atoms ke\n"

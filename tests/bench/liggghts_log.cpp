@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "liggghts_log_reader.hpp"
+
 namespace centrec::bench {
 namespace {
 
@@ -53,17 +55,12 @@ LiggghtsLog parse_liggghts_log(const std::string& path) {
       if (starts_with(phase, "timed"))
         log.memory_mbytes_per_rank = std::max(log.memory_mbytes_per_rank, std::stod(line.substr(28)));
     } else if (starts_with(line, "Loop time of ")) {
-      // "Loop time of T on P procs for S steps with N atoms"
       if (starts_with(phase, "timed")) {
-        std::istringstream l(line.substr(13));
-        double t;
-        std::string on, procs, for_, steps_word, with;
-        long p, steps, atoms;
-        l >> t >> on >> p >> procs >> for_ >> steps >> steps_word >> with >> atoms;
-        if (!l) throw std::runtime_error("cannot parse LIGGGHTS line: " + line);
-        log.timed_loop_seconds.push_back(t);
-        log.timed_loop_steps.push_back(steps);
-        log.atoms_in_loop = atoms;
+        cli::LiggghtsLoopTime t;
+        if (!cli::parse_loop_time(line, t)) throw std::runtime_error("cannot parse LIGGGHTS line: " + line);
+        log.timed_loop_seconds.push_back(t.seconds);
+        log.timed_loop_steps.push_back(t.steps);
+        log.atoms_in_loop = t.atoms;
       }
     } else if (starts_with(line, "Ave neighs/atom = ")) {
       // Half list (newton off: pairs across a rank boundary are held by both ranks).

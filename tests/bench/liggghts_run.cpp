@@ -1,29 +1,11 @@
 #include "tests/bench/liggghts_run.hpp"
 
-#include <unistd.h>
-
-#include <cstdlib>
-#include <sys/wait.h>
-
+#include "liggghts_launch.hpp"
 #include "tests/bench/liggghts_log.hpp"
 
 namespace centrec::bench {
-namespace {
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
-
-int run_shell(const std::string& cmd) {
-  const int status = std::system(cmd.c_str());
-  if (status == -1) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
-}  // namespace
-
-bool liggghts_available(const LiggghtsRunSettings& r) {
-  return run_shell("command -v " + quoted(r.mpirun) + " >/dev/null 2>&1 && command -v " + quoted(r.liggghts) +
-                   " >/dev/null 2>&1") == 0;
-}
+bool liggghts_available(const LiggghtsRunSettings& r) { return cli::liggghts_available(r.mpirun, r.liggghts); }
 
 EngineResult run_liggghts(const FilmCase& c, const FilmState& s, const LiggghtsRunSettings& r) {
   EngineResult res;
@@ -34,15 +16,16 @@ EngineResult run_liggghts(const FilmCase& c, const FilmState& s, const LiggghtsR
   const std::string deck = r.work_dir + "/in.film_R" + std::to_string(r.deck.ranks);
   const std::string log = r.work_dir + "/log.film_R" + std::to_string(r.deck.ranks);
   write_liggghts_deck(deck, c, s, r.deck);
-  // Screen output goes to a file: "-screen none" crashes the Debian LIGGGHTS 3.8 build
-  // (segfault before the first line). --bind-to none: OpenMPI would otherwise pin ranks to cores that other processes of
-  // this (shared) machine also use; --oversubscribe: never refuse 2 ranks on 2 cores.
-  std::string cmd = "cd " + quoted(r.work_dir) + " && " + quoted(r.mpirun);
-  if (geteuid() == 0) cmd += " --allow-run-as-root";
-  cmd += " --oversubscribe --bind-to none -np " + std::to_string(r.deck.ranks) + " " + quoted(r.liggghts) +
-         " -in " + quoted(deck) + " -log " + quoted(log) + " > " +
-         quoted(r.work_dir + "/screen.film_R" + std::to_string(r.deck.ranks)) + " 2>&1";
-  const int rc = run_shell(cmd);
+  cli::LiggghtsLaunch launch;
+  launch.mpirun = r.mpirun;
+  launch.liggghts = r.liggghts;
+  launch.ranks = r.deck.ranks;
+  launch.work_dir = r.work_dir;
+  launch.deck = deck;
+  launch.log = log;
+  launch.screen = r.work_dir + "/screen.film_R" + std::to_string(r.deck.ranks);
+  const std::string cmd = cli::liggghts_command(launch);
+  const int rc = cli::run_shell(cmd);
   LiggghtsLog parsed;
   try {
     parsed = parse_liggghts_log(log);

@@ -1,0 +1,131 @@
+// The LIGGGHTS export (issue 9 items 1 and 5): a golden deck for a small case, so any
+// change to the export is a visible diff, the files it writes, and the refusal of
+// settings LIGGGHTS cannot express.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "case_file.hpp"
+#include "liggghts_export.hpp"
+
+using namespace centrec::cli;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kCase = std::string(CENTREC_SOURCE_DIR) + "/tests/liggghts/small_drum.yaml";
+const std::string kGolden = std::string(CENTREC_SOURCE_DIR) + "/tests/liggghts/golden/in.centrec";
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The deck without its "written by ... (centrec VERSION)" line, which names the commit.
+std::string without_version(const std::string& deck) {
+  std::istringstream in(deck);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (line.rfind("# written by", 0) != 0) out += line + "\n";
+  return out;
+}
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t k = text.find(what); k != std::string::npos; k = text.find(what, k + 1)) ++n;
+  return n;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("centrec_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+CaseFile small_case() {
+  CaseFile cf = read_case_file(kCase);
+  cf.path = "tests/liggghts/small_drum.yaml";  // the deck names the case; keep it machine-independent
+  return cf;
+}
+
+}  // namespace
+
+TEST(LiggghtsExport, DeckMatchesGolden) {
+  const CaseFile cf = small_case();
+  const fs::path dir = fresh_dir("golden");
+  export_liggghts(cf, *cf.dem, dir.string());
+  const std::string deck = without_version(slurp((dir / "in.centrec").string()));
+  if (std::getenv("CENTREC_UPDATE_GOLDEN")) {
+    std::ofstream(kGolden) << deck;
+    GTEST_SKIP() << "golden deck rewritten: " << kGolden;
+  }
+  const std::string golden = slurp(kGolden);
+  ASSERT_FALSE(golden.empty()) << "missing " << kGolden << " (CENTREC_UPDATE_GOLDEN=1 writes it)";
+  EXPECT_EQ(deck, golden) << "the exported deck changed; if intended, rerun with CENTREC_UPDATE_GOLDEN=1 and "
+                             "review the diff of "
+                          << kGolden;
+  fs::remove_all(dir);
+}
+
+TEST(LiggghtsExport, WritesDataAndGeometryOfTheScene) {
+  const CaseFile cf = small_case();
+  const fs::path dir = fresh_dir("files");
+  const LiggghtsDeckPlan plan = export_liggghts(cf, *cf.dem, dir.string());
+  // The data file holds the native scene's glued layer and starting film, ids in order.
+  const std::string data = slurp((dir / plan.data).string());
+  EXPECT_EQ(plan.initial_free, 200);
+  EXPECT_GT(plan.glued, 0);
+  EXPECT_NE(data.find(std::to_string(plan.glued + plan.initial_free) + " atoms"), std::string::npos);
+  // Drum STL: cylinder + back plate (a fan: one triangle per sector) + lip (two per sector).
+  const std::string drum = slurp((dir / plan.drum_stl).string());
+  const std::string outlet = slurp((dir / plan.outlet_stl).string());
+  const int sectors = count(outlet, "endfacet");  // the outlet face is a fan: one per sector
+  const int drum_facets = count(drum, "endfacet");
+  EXPECT_GE(sectors, 24);
+  EXPECT_EQ((drum_facets - 3 * sectors) % (2 * sectors), 0) << drum_facets << " facets, " << sectors << " sectors";
+  // Every vertex lies on the analytic geometry: radius R (cylinder, plate rim, lip rim),
+  // R - lip (lip inner rim) or the axis (plate centre).
+  const double R = 0.015, lip = 0.0012, L = 0.012;
+  std::istringstream in(drum);
+  std::string word;
+  double worst = 0.0;
+  while (in >> word) {
+    if (word != "vertex") continue;
+    double x, y, z;
+    in >> x >> y >> z;
+    const double r = std::hypot(x, y);
+    const double e = std::min({std::fabs(r - R), std::fabs(r - (R - lip)), r});
+    worst = std::max(worst, e);
+    EXPECT_TRUE(z > -1e-12 && z < L + 1e-12) << z;
+  }
+  std::printf("largest vertex distance from the analytic drum: %.3g m (tolerance 1e-12)\n", worst);
+  EXPECT_LT(worst, 1e-12);
+  // Dumps every turn / snapshots_per_turn: 640 rpm, 4 per turn, dt 2e-5 -> round(1171.875).
+  EXPECT_EQ(plan.dump_every, 1172);
+  EXPECT_EQ(plan.spinup_steps % plan.dump_every, 0);
+  EXPECT_EQ(plan.sampling_steps, 4 * plan.dump_every);
+  fs::remove_all(dir);
+}
+
+TEST(LiggghtsExport, RefusesTheRelativeWallRollingModelByName) {
+  CaseFile cf = small_case();
+  DemCase dc = *cf.dem;
+  dc.scene.wall_rolling = centrec::dem::WallRolling::relative;
+  const fs::path dir = fresh_dir("refuse");
+  try {
+    export_liggghts(cf, dc, dir.string());
+    FAIL() << "the relative wall rolling model was exported";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("contacts.wall_rolling_model: relative"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "in.centrec"));
+  dc.scene.drum.omega = 0.0;
+  const auto why = liggghts_inexpressible(dc);
+  ASSERT_EQ(why.size(), 2u);
+  EXPECT_NE(why[1].find("drum.speed_rpm"), std::string::npos) << why[1];
+}
