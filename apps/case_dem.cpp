@@ -95,6 +95,10 @@ DemCase read_dem_case(yaml::MapReader root) {
   auto slice = root.child("slice");
   s.slice.enabled = slice.boolean("enabled", false);
   s.slice.length = slice.number("length_d", 20.0, Range::closed(3.0, 1e5)) * d;
+  s.slice.target_mass_flow = slice.number("target_mass_flow", 0.0, Range::non_negative(), "kg/s (0 = no controller)");
+  s.slice.controller_gain = slice.number("controller_gain", 0.25, Range::open_closed(0.0, 2.0));
+  s.slice.controller_window_turns = slice.number("controller_window_turns", 1.0, Range::closed(0.1, 1000.0), "turns");
+  s.slice.controller_max_step = slice.number("controller_max_step", 0.1, Range::open_closed(0.0, 1.0));
   slice.finish();
 
   s.gravity = root.number("gravity", 9.81, Range::non_negative(), "m/s^2");

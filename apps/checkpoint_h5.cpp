@@ -186,13 +186,31 @@ void visit_scene(IO& io, dem::scene::SceneState& s) {
   io.number(g, "out_total", s.out_total);
   io.number(g, "lost_total", s.lost_total);
   integer(io, g, "has_feeder", s.has_feeder);
-  records(io, g + "/mass_flow_log", s.mass_flow_log, 6, "s, kg, kg, kg, kg, 1 (time fed out lost holdup particles)",
+  records(io, g + "/mass_flow_log", s.mass_flow_log, 7,
+          "s, kg, kg, kg, kg, 1, kg/s (time fed out lost holdup particles axial_flow)",
           [](const dem::scene::MassFlowSample& m, std::vector<double>& o) {
-            o.insert(o.end(), {m.time, m.fed, m.out, m.lost, m.holdup, static_cast<double>(m.particles)});
+            o.insert(o.end(), {m.time, m.fed, m.out, m.lost, m.holdup, static_cast<double>(m.particles), m.axial_flow});
           },
           [](const double* p, dem::scene::MassFlowSample& m) {
-            m = {p[0], p[1], p[2], p[3], p[4], static_cast<std::int64_t>(p[5])};
+            m = {p[0], p[1], p[2], p[3], p[4], static_cast<std::int64_t>(p[5]), p[6]};
           });
+  integer(io, g, "has_controller", s.has_controller);
+  if (s.has_controller) {
+    const std::string c = "/controller";
+    auto& cs = s.controller;
+    io.number(c, "window_start", cs.window_start);
+    io.number(c, "flow_sum", cs.flow_sum);
+    integer(io, c, "flow_samples", cs.flow_samples);
+    io.text(c, "rng", cs.rng);
+    io.text(c, "size_rng", cs.size_rng);
+    records(io, c + "/log", cs.log, 4, "s, kg/s, 1, 1 (time mass_flow particles change)",
+            [](const dem::scene::ControllerWindow& w, std::vector<double>& o) {
+              o.insert(o.end(), {w.time, w.mass_flow, static_cast<double>(w.particles), static_cast<double>(w.change)});
+            },
+            [](const double* p, dem::scene::ControllerWindow& w) {
+              w = {p[0], p[1], static_cast<std::int64_t>(p[2]), static_cast<std::int64_t>(p[3])};
+            });
+  }
   if (!s.has_feeder) return;
   const std::string f = "/feeder";
   io.text(f, "size_rng", s.feeder.size_rng);

@@ -217,6 +217,7 @@ void run_dem_case(const CaseFile& cf, const DemCase& dc, const std::string& out_
   r.glued_particles = scene.glued_particles();
   r.holdup_kg = scene.holdup_mass();
   r.mass_flow = scene.mass_flow_log();
+  r.controller = scene.controller_log();
   r.feeder_deferred = scene.feeder_stats().deferred;
   r.contacts_per_particle = sim.neighbour_stats().contacts_per_particle();
   r.particle_steps = particle_steps;

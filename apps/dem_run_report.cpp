@@ -72,6 +72,21 @@ nlohmann::json summary(const CaseFile& cf, const DemCase& dc, const DemRunResult
     j["steady_state"] = ss.steady;
     j["time_to_steady_state_s"] = ss.steady ? nlohmann::json(ss.time) : nlohmann::json(nullptr);
   }
+  if (dc.scene.slice.enabled) {
+    // Axial mass flow of the slice, mean over the flow window (and the controller's record).
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t k = log.size(); k-- > 1 && log.back().time - log[k].time < window;) {
+      sum += log[k].axial_flow;
+      ++n;
+    }
+    j["slice_mdot_kg_s"] = n ? sum / static_cast<double>(n) : 0.0;
+    j["slice_target_mdot_kg_s"] = dc.scene.slice.target_mass_flow;
+    nlohmann::json windows = nlohmann::json::array();
+    for (const auto& w : r.controller)
+      windows.push_back({{"time_s", w.time}, {"mdot_kg_s", w.mass_flow}, {"particles", w.particles}, {"change", w.change}});
+    j["controller_windows"] = windows;
+  }
   j["lost_kg"] = log.empty() ? 0.0 : log.back().lost;
   j["feeder_deferred_insertions"] = r.feeder_deferred >= 0 ? nlohmann::json(r.feeder_deferred) : nlohmann::json(nullptr);
   j["contacts_per_particle"] =
@@ -95,9 +110,10 @@ nlohmann::json summary(const CaseFile& cf, const DemCase& dc, const DemRunResult
 
 std::string mass_flow_csv(const std::vector<dem::scene::MassFlowSample>& log) {
   std::ostringstream csv;
-  csv << "# time_s,fed_kg,out_kg,lost_kg,holdup_kg,particles\n";
+  csv << "# time_s,fed_kg,out_kg,lost_kg,holdup_kg,particles,slice_axial_flow_kg_s\n";
   for (const auto& s : log)
-    csv << s.time << ',' << s.fed << ',' << s.out << ',' << s.lost << ',' << s.holdup << ',' << s.particles << '\n';
+    csv << s.time << ',' << s.fed << ',' << s.out << ',' << s.lost << ',' << s.holdup << ',' << s.particles << ','
+        << s.axial_flow << '\n';
   return csv.str();
 }
 

@@ -31,6 +31,7 @@ struct DemRunResult {
   double contacts_per_particle = -1.0;  // < 0: the engine did not report it (null in JSON)
   double particle_steps = 0.0;
   double wall_time = 0.0;  // s
+  std::vector<dem::scene::ControllerWindow> controller;  // slice holdup controller windows
   dem::scene::FilmFields fields;
   std::vector<NamedSnapshot> snapshots;
 };

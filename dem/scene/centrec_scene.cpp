@@ -84,6 +84,12 @@ CentrecScene::CentrecScene(const SceneConfig& config, const SceneState& state) :
   sim_->import_state(state.engine);
   for (Motion m : sim_->motions()) glued_ += (m == Motion::drum);
   steps_per_batch_ = std::max<std::int64_t>(1, std::llround(cfg_.feeder.interval / sim_->dt()));
+  if (state.has_controller != (cfg_.slice.enabled && cfg_.slice.target_mass_flow > 0.0))
+    throw std::invalid_argument("checkpoint: the slice controller setting differs from the case");
+  if (state.has_controller) {
+    controller_ = std::make_unique<SliceHoldupController>(cfg_, particle_material_, sim_->time());
+    controller_->restore(state.controller);
+  }
   log_ = state.mass_flow_log;
   out_total_ = state.out_total;
   lost_total_ = state.lost_total;
@@ -97,6 +103,8 @@ SceneState CentrecScene::export_state() const {
   s.mass_flow_log = log_;
   s.out_total = out_total_;
   s.lost_total = lost_total_;
+  s.has_controller = controller_ != nullptr;
+  if (controller_) s.controller = controller_->state();
   return s;
 }
 
@@ -150,6 +158,8 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
     }
   }
   sim_->setup();
+  if (cfg_.slice.enabled && cfg_.slice.target_mass_flow > 0.0)
+    controller_ = std::make_unique<SliceHoldupController>(cfg_, particle_material_, sim_->time());
   steps_per_batch_ = std::max<std::int64_t>(1, std::llround(cfg_.feeder.interval / sim_->dt()));
   record(0.0, 0.0);
 }
@@ -168,6 +178,11 @@ void CentrecScene::build_walls() {
 }
 
 double CentrecScene::turn_period() const { return scene::turn_period(cfg_); }
+
+const std::vector<ControllerWindow>& CentrecScene::controller_log() const {
+  static const std::vector<ControllerWindow> none;
+  return controller_ ? controller_->log() : none;
+}
 
 const FeederStats& CentrecScene::feeder_stats() const {
   static const FeederStats none{};
@@ -218,6 +233,7 @@ void CentrecScene::advance(double duration) {
       }
       if (!gone.empty()) sim_->remove_particles(gone);
     }
+    if (controller_) controller_->after_batch(*sim_);
     record(out, lost);
   }
 }
@@ -232,6 +248,7 @@ void CentrecScene::record(double out_mass, double lost_mass) {
   s.lost = lost_total_;
   s.holdup = holdup_mass();
   s.particles = free_particles();
+  if (cfg_.slice.enabled) s.axial_flow = slice_axial_mass_flow(*sim_, cfg_.slice.length);
   log_.push_back(s);
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dem/scene/feeder.hpp"
+#include "dem/scene/slice_controller.hpp"
 #include "dem/scene/scene_config.hpp"
 #include "dem/simulation.hpp"
 
@@ -21,6 +22,7 @@ struct MassFlowSample {
   double lost = 0.0;           // kg removed elsewhere (escaped the drum) so far
   double holdup = 0.0;         // kg of free particles in the drum now
   std::int64_t particles = 0;  // free particles in the drum now
+  double axial_flow = 0.0;     // kg/s; slice: sum(m v_z) / Ls now (0 for a drum)
 };
 
 // Gravity in the drum frame (axis +z, outlet at z = L): the tilt puts a component along +z.
@@ -36,6 +38,8 @@ struct SceneState {
   FeederState feeder;
   std::vector<MassFlowSample> mass_flow_log;
   double out_total = 0.0, lost_total = 0.0;  // kg
+  bool has_controller = false;
+  SliceControllerState controller;
 };
 
 class CentrecScene {
@@ -56,6 +60,8 @@ class CentrecScene {
   const SceneConfig& config() const { return cfg_; }
   const std::vector<MassFlowSample>& mass_flow_log() const { return log_; }
   const FeederStats& feeder_stats() const;
+  // The slice holdup controller's windows (empty without a controller).
+  const std::vector<ControllerWindow>& controller_log() const;
 
   double drum_radius() const { return 0.5 * cfg_.drum.diameter; }
   double turn_period() const;  // s per drum revolution
@@ -72,6 +78,7 @@ class CentrecScene {
   SceneConfig cfg_;
   std::unique_ptr<Simulation> sim_;
   std::unique_ptr<Feeder> feeder_;
+  std::unique_ptr<SliceHoldupController> controller_;  // slice with a target mass flow
   std::vector<MassFlowSample> log_;
   std::int64_t steps_per_batch_ = 1;
   std::int64_t glued_ = 0;

@@ -1,8 +1,7 @@
 #include "dem/scene/feeder.hpp"
 
 #include <cmath>
-#include <sstream>
-#include <stdexcept>
+#include "dem/scene/rng_state.hpp"
 #include <vector>
 
 #include "dem/sphere_mass.hpp"
@@ -17,9 +16,7 @@ Feeder::Feeder(const SceneConfig& config, std::uint64_t seed)
 FeederState Feeder::state() const {
   FeederState s;
   s.size_rng = sizes_.rng_state();
-  std::ostringstream out;
-  out << rng_;
-  s.place_rng = out.str();
+  s.place_rng = rng_text(rng_);
   s.backlog = backlog_;
   s.next_diameter = next_diameter_;
   s.stats = stats_;
@@ -28,9 +25,7 @@ FeederState Feeder::state() const {
 
 void Feeder::restore(const FeederState& s) {
   sizes_.set_rng_state(s.size_rng);
-  std::istringstream in(s.place_rng);
-  in >> rng_;
-  if (in.fail()) throw std::invalid_argument("feeder: unreadable generator state");
+  read_rng_text(s.place_rng, rng_, "feeder");
   backlog_ = s.backlog;
   next_diameter_ = s.next_diameter;
   stats_ = s.stats;

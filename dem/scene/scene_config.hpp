@@ -69,6 +69,13 @@ struct InitialFilmSpec {
 struct SliceSpec {
   bool enabled = false;
   double length = 24e-3;  // m (period)
+  // Holdup controller (dem/scene/slice_controller.hpp): after every window of turns,
+  // adds packed co-rotating particles at the film surface or removes surface particles
+  // until the axial mass flow sum(m v_z) / length matches the target.
+  double target_mass_flow = 0.0;  // kg/s; 0 = off (the holdup stays as started)
+  double controller_gain = 0.25;  // holdup change per window = gain x ln(target / flow) x holdup
+  double controller_window_turns = 1.0;  // turns per measurement window
+  double controller_max_step = 0.1;      // largest holdup change per window, fraction of the holdup
 };
 
 struct SceneConfig {

@@ -1,7 +1,8 @@
 #include "dem/scene/size_distribution.hpp"
 
 #include <algorithm>
-#include <sstream>
+
+#include "dem/scene/rng_state.hpp"
 #include <stdexcept>
 
 namespace centrec::dem::scene {
@@ -12,17 +13,9 @@ SizeSampler::SizeSampler(const ParticleSpec& spec, std::uint64_t seed) : spec_(s
     throw std::invalid_argument("particle relative_spread must be in [0, 0.3)");
 }
 
-std::string SizeSampler::rng_state() const {
-  std::ostringstream out;
-  out << rng_;
-  return out.str();
-}
+std::string SizeSampler::rng_state() const { return rng_text(rng_); }
 
-void SizeSampler::set_rng_state(const std::string& text) {
-  std::istringstream in(text);
-  in >> rng_;
-  if (in.fail()) throw std::invalid_argument("size sampler: unreadable generator state");
-}
+void SizeSampler::set_rng_state(const std::string& text) { read_rng_text(text, rng_, "size sampler"); }
 
 double SizeSampler::max_diameter() const {
   switch (spec_.distribution) {
