@@ -33,7 +33,7 @@ def load(d):
 def main(ref, dirs):
     sr, yr, ur, _, theta = load(ref)
     rows = []
-    print("| run | D/d | particles | film thickness d | vs ref d | max dU/Umax 45 deg | 90 deg | 135 deg | wall time s | particle-steps/s |")
+    print("| run | case | free particles | film thickness d | vs ref d | max dU/Umax 45 deg | 90 deg | 135 deg | wall time s | particle-steps/s |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for d in [ref] + dirs:
         s, y, u, su, _ = load(d)
