@@ -129,7 +129,7 @@ int cmd_sweep(const Args& args) {
   nlohmann::json table = nlohmann::json::array();
   std::ostringstream csv;
   csv << "speed_rpm,mass_flow_kg_s,T_out_K,efficiency,k_eff_W_mK,k_bed_W_mK,k_rad_W_mK,k_mix_W_mK,"
-         "film_thickness_d,dem_outlet_mdot_kg_s,status\n";
+         "film_thickness_d,imposed_mdot_kg_s,status\n";
   int failed = 0;
   for (const Point& p : points) {
     nlohmann::json row = {{"speed_rpm", p.rpm}, {"mass_flow_kg_s", p.mdot}, {"dir", p.dir}, {"status", p.status}};
@@ -142,12 +142,12 @@ int cmd_sweep(const Args& args) {
       row["efficiency"] = s["efficiency"];
       row["k_eff"] = k;
       row["film_thickness_d"] = s["film"]["mean_thickness_d"];
-      row["dem_outlet_mdot_kg_s"] = s.contains("dem") ? s["dem"]["outlet_mdot_kg_s"] : nlohmann::json(nullptr);
+      row["imposed_mdot_kg_s"] = s["mass_flow_kg_s"];  // the DEM's outlet flow carried to the receiver (eq 2)
       csv << s["T_out_K"].get<double>() << ',' << s["efficiency"].get<double>() << ','
           << k["k_eff"].get<double>() << ',' << k["bed_conduction"].get<double>() << ','
           << k["radiation"].get<double>() << ',' << k["mixing"].get<double>() << ','
           << s["film"]["mean_thickness_d"].get<double>() << ','
-          << (s.contains("dem") ? s["dem"]["outlet_mdot_kg_s"].get<double>() : 0.0) << ",ok\n";
+          << s["mass_flow_kg_s"].get<double>() << ",ok\n";
     } else {
       ++failed;
       csv << ",,,,,,,,failed\n";

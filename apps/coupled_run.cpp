@@ -75,7 +75,15 @@ CoupledRun run_coupled_case(const CaseFile& cf, const RunOptions& o) {
     r.dem_seconds = since(t0);
     // 2. Mapping, scale-up, mass-flux conservation.
     const auto t1 = std::chrono::steady_clock::now();
-    r.averages = io::read_dem_film(r.dem_dir + "/dem.h5", r.dem);
+    try {
+      r.averages = io::read_dem_film(r.dem_dir + "/dem.h5", r.dem);
+    } catch (const std::exception& e) {
+      // The usual cause: no film formed (too slow a drum for this retention, too short a run).
+      const auto op = dem_operating_point(r.dem);
+      throw std::runtime_error(std::string(e.what()) + "; the DEM drum ran at omega^2 R / g = " +
+                               std::to_string(coupling::centrifugal_ratio(op)) + " and ended with a holdup of " +
+                               std::to_string(r.dem_summary.value("holdup_kg", 0.0) * 1e3) + " g");
+    }
     coupling::MappedFilm mapped = coupling::map_dem_film(r.averages);
     r.tangential = mapped.tangential;
     thermal::FilmField film = std::move(mapped.film);

@@ -2,7 +2,8 @@
 // receiver, its DEM drum derived by eqs 1-3 at D/d = 21, a short DEM, scaled back up) gives
 // the stored outlet temperature within 1 K; a rerun takes the cached DEM and gives an
 // identical result; a thermal-only change reuses the DEM; the outputs carry the film and the
-// scaling; mismatched particles between DEM and thermal are refused.
+// scaling; the stored film.h5 reruns the thermal part alone with the same answer; mismatched
+// particles between DEM and thermal are refused.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -88,6 +89,13 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
   const auto res = io::H5File::open_read(dir + "/results.h5");
   EXPECT_TRUE(res.exists("/coupling/sampled_flux_over_mdot"));
   EXPECT_TRUE(res.exists("/steady/T"));
+  // The stored film is reusable: a case giving `film: {file: film.h5}` skips the DEM and
+  // reproduces the coupled answer.
+  const CaseFile reuse = edited_case(dir, "thermal:\n", "film: {file: " + dir + "/film.h5}\nthermal:\n");
+  const CoupledRun fr = run_coupled_case(reuse, o);
+  std::printf("from film.h5: T_out %.6f K (coupled %.6f K)\n", fr.result.balance.T_out, T1);
+  EXPECT_FALSE(fr.film_from_dem);
+  EXPECT_NEAR(fr.result.balance.T_out, T1, 1e-9);
   fs::remove_all(dir);
 }
 

@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""Charts of a `centrec sweep` (issue 5 item 4): the operating map.
+
+Usage: /usr/bin/python3 apps/plot_sweep.py OUT_DIR
+Reads OUT_DIR/sweep.json and writes
+  OUT_DIR/sweep_map.png         outlet temperature, efficiency, k_eff and film thickness
+                                against mass flow, one line per rotational speed
+  OUT_DIR/sweep_keff_parts.png  k_eff split into bed conduction, radiation and mixing per point
+Uses Debian's python3-matplotlib (hence /usr/bin/python3).
+"""
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main(out):
+    with open(os.path.join(out, "sweep.json")) as fh:
+        sweep = json.load(fh)
+    pts = [p for p in sweep["points"] if p.get("status") == 0 and "T_out_K" in p]
+    if not pts:
+        sys.exit("no successful sweep point in %s" % out)
+    speeds = sorted({p["speed_rpm"] for p in pts})
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
+    panels = [("T_out_K", "outlet temperature (C)", lambda p: p["T_out_K"] - 273.15),
+              ("efficiency", "thermal efficiency", lambda p: p["efficiency"]),
+              ("k_eff", "film k_eff (W/(m K))", lambda p: p["k_eff"]["k_eff"]),
+              ("film_thickness_d", "mean film thickness (d)", lambda p: p["film_thickness_d"])]
+    for ax, (_, label, get) in zip(axes.flat, panels):
+        for n in speeds:
+            row = sorted((p for p in pts if p["speed_rpm"] == n), key=lambda p: p["mass_flow_kg_s"])
+            ax.plot([p["mass_flow_kg_s"] for p in row], [get(p) for p in row], "o-", label="%.4g rpm" % n)
+        ax.set_xlabel("receiver mass flow (kg/s)")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+        ax.legend()
+    fig.suptitle("operating map: %s" % sweep["case"])
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "sweep_map.png"), dpi=120)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(10, 4.5))
+    names = ["%.4g rpm\n%.4g kg/s" % (p["speed_rpm"], p["mass_flow_kg_s"]) for p in pts]
+    bottom = [0.0] * len(pts)
+    for part in ("bed_conduction", "radiation", "mixing"):
+        vals = [p["k_eff"][part] for p in pts]
+        ax.bar(names, vals, bottom=bottom, label=part)
+        bottom = [b + v for b, v in zip(bottom, vals)]
+    ax.plot(names, [p["k_eff"]["k_eff"] for p in pts], "kD", label="k_eff (series value)")
+    ax.set_ylabel("W/(m K), film mean")
+    ax.set_title("parts of k_eff over the operating window")
+    ax.legend()
+    ax.grid(alpha=0.3, axis="y")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "sweep_keff_parts.png"), dpi=120)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    main(sys.argv[1])
