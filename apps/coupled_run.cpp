@@ -89,7 +89,7 @@ CoupledRun run_coupled_case(const CaseFile& cf, const RunOptions& o) {
     thermal::FilmField film = std::move(mapped.film);
     double mdot = r.averages.mdot;
     if (r.has_receiver) {
-      film = coupling::scale_up_film(film, r.receiver.op, &r.scale);
+      film = coupling::scale_up_film(film, dem_operating_point(r.dem), r.receiver.op, &r.scale);
       mdot *= r.scale.radius_ratio;  // eq (2): the DEM's measured flow carried to the receiver
     }
     r.conservation = coupling::conserve_mass_flow(film, r.averages.particle_density, mdot);

@@ -111,7 +111,8 @@ TEST(FilmMapping, ScaledUpFilmEqualsScaledDownInParticleDiameters) {
   const coupling::ReceiverOperatingPoint act{2 * big.drum_radius, big.length, big.omega, big.mdot};
   const auto mapped = coupling::map_dem_film(sim);
   coupling::ScaleUpRecord rec;
-  const auto up = coupling::scale_up_film(mapped.film, act, &rec);
+  const coupling::ReceiverOperatingPoint dem_drum{2 * sim.drum_radius, sim.length, sim.omega, sim.mdot};
+  const auto up = coupling::scale_up_film(mapped.film, dem_drum, act, &rec);
   const double d = sim.particle_diameter;
   std::printf("scale-up: z x %.4f, eq 1/2/3 deviations %.1e/%.1e/%.1e\n", rec.length_ratio, rec.eq1_error,
               rec.eq2_error, rec.eq3_error);
