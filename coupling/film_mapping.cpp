@@ -112,12 +112,16 @@ MappedFilm map_dem_film(const DemFilmAverages& a) {
   // Zone-weighted solid fraction; a bin with (almost) no particle volume counts as empty.
   std::vector<double> phi(nb), phi_sd(nb), D = a.dispersion, D_sd = a.dispersion_std;
   const double fm = tg.moving_fraction;
+  // A zone the DEM never saw (the whole circumference moving, say) has NaN profiles: it
+  // has no weight, so it takes the other zone's values rather than poisoning the sum.
+  auto either = [](double x, double other) { return std::isfinite(x) ? x : other; };
   for (std::size_t k = 0; k < nb; ++k) {
     const double glued = a.phi_glued.empty() ? 0.0 : a.phi_glued[k];
-    const double p = fm * a.phi_moving[k] + (1.0 - fm) * a.phi_stationary[k] + glued;
+    const double pm = either(a.phi_moving[k], a.phi_stationary[k]), ps = either(a.phi_stationary[k], pm);
+    const double sm = either(a.phi_moving_std[k], a.phi_stationary_std[k]), ss = either(a.phi_stationary_std[k], sm);
+    const double p = fm * pm + (1.0 - fm) * ps + glued;
     phi[k] = p > 1e-3 ? p : kNaN;
-    phi_sd[k] = std::sqrt(fm * a.phi_moving_std[k] * a.phi_moving_std[k] +
-                          (1.0 - fm) * a.phi_stationary_std[k] * a.phi_stationary_std[k]);
+    phi_sd[k] = std::sqrt(fm * sm * sm + (1.0 - fm) * ss * ss);
     if (!std::isfinite(phi[k])) D[k] = D_sd[k] = kNaN;
   }
   tg.filled_bins += fill_empty(phi, kNaN);

@@ -55,10 +55,14 @@ MassFlowConservation conserve_mass_flow(thermal::FilmField& f, double rho_s, dou
     c.sampled_over_mdot.push_back(cylindrical_mass_flow(f, i, rho_s, c.drum_radius) / mdot);
   }
   c.mean_flux_depth = q_sum / p_sum;
-  c.planar_diameter = 2.0 * (c.drum_radius - c.mean_flux_depth);
+  // Every section carries mdot by the cylindrical formula; the planar film's perimeter is
+  // taken at the inlet section's flux-weighted radius, where the thermal model reads its
+  // total (its grid rescales the other faces to it: mass_flux_max_correction).
+  const double inlet_depth = phi_u_eta_integral(f, 0) / phi_u_integral(f, 0);
+  c.planar_diameter = 2.0 * (c.drum_radius - inlet_depth);
   const std::size_t n = f.neta();
   for (std::size_t i = 0; i < f.nz(); ++i) {
-    const double scale = mdot / (M_PI * c.planar_diameter * rho_s * phi_u_integral(f, i));
+    const double scale = mdot / cylindrical_mass_flow(f, i, rho_s, c.drum_radius);
     for (std::size_t j = 0; j < n; ++j) {
       f.u[i * n + j] *= scale;
       if (!f.u_std.empty()) f.u_std[i * n + j] *= scale;

@@ -4,9 +4,9 @@
 // The thermal model is planar per unit width with perimeter pi * drum_diameter
 // (thermal/film_grid.hpp), i.e. it would carry pi D rho_s integral(phi u). The two agree
 // when the planar film sits at the flux-weighted mean radius R - eta_bar, so
-// conserve_mass_flow sets the film's drum_diameter to 2 (R - eta_bar) and scales u per
-// section so that the planar total equals the DEM's mdot exactly; the cylindrical total
-// then differs only by the sections' spread of eta_bar (reported).
+// conserve_mass_flow scales u per section so that each carries the DEM's mdot by the
+// cylindrical formula, and sets the film's drum_diameter to 2 (R - eta_bar) of the inlet
+// section, where the thermal model reads its total: both totals are then mdot.
 #include <vector>
 
 #include "thermal/film_field.hpp"
@@ -26,13 +26,13 @@ double planar_mass_flow(const thermal::FilmField& f, std::size_t i, double rho_s
 struct MassFlowConservation {
   double drum_radius = 0.0;         // m, the true drum's
   double mdot = 0.0;                // kg/s imposed
-  double mean_flux_depth = 0.0;     // eta_bar: flux-weighted mean wall distance, m
-  double planar_diameter = 0.0;     // 2 (R - eta_bar), m: the film's drum_diameter afterwards
+  double mean_flux_depth = 0.0;     // eta_bar: flux-weighted mean wall distance over the film, m
+  double planar_diameter = 0.0;     // 2 (R - eta_bar of the inlet section), m: the film's drum_diameter afterwards
   std::vector<double> sampled_over_mdot;  // per section: the film's cylindrical flux before scaling / mdot
   double max_cylindrical_error = 0.0;     // after scaling: max |cylindrical flux / mdot - 1|
 };
 
-// Scales u (and u_std) of every section so the film carries `mdot` (see above); f's
+// Scales u (and u_std) of every section so it carries `mdot` (see above); f's
 // drum_diameter must be the true drum's on entry. Throws std::invalid_argument if a
 // section carries no flux.
 MassFlowConservation conserve_mass_flow(thermal::FilmField& f, double rho_s, double mdot);

@@ -90,6 +90,16 @@ TEST(FilmMapping, EmptyBinsAreFilled) {
   EXPECT_NEAR(f.sample(f.phi, f.z[0], 0.25 * d), 0.52, 1e-12);               // nearest sampled bin
 }
 
+TEST(FilmMapping, AZoneTheDemNeverSawHasNoWeight) {
+  // The whole circumference moving: the stationary-zone profiles are NaN (no bin sampled).
+  auto a = test::synthetic_dem_film(0.12);
+  a.phi_stationary.assign(16, std::nan(""));
+  a.phi_stationary_std.assign(16, std::nan(""));
+  const auto m = coupling::map_dem_film(a);
+  EXPECT_DOUBLE_EQ(m.tangential.moving_fraction, 1.0);
+  EXPECT_NEAR(m.film.sample(m.film.phi, m.film.z[0], 2.25 * a.particle_diameter), 0.52, 1e-12);
+}
+
 TEST(FilmMapping, GluedLayerVolumeIsExact) {
   const double d = 1.2e-3, per_area = 1.0 / (d * d);  // square lattice, spacing 1 d
   std::vector<double> centres;
@@ -132,10 +142,11 @@ TEST(FilmMapping, ScaledUpFilmEqualsScaledDownInParticleDiameters) {
   // mean radius R - eta_bar, so u differs by (R_act/R_sim) (R_sim - eta_bar)/(R_act - eta_bar):
   // the curvature error of the scaling laws at this D/d.
   thermal::FilmField fs = mapped.film, fu = up;
-  const auto cs = coupling::conserve_mass_flow(fs, sim.particle_density, sim.mdot);
+  coupling::conserve_mass_flow(fs, sim.particle_density, sim.mdot);
   coupling::conserve_mass_flow(fu, sim.particle_density, act.mass_flow);
   const std::size_t k = fs.neta() / 2;
-  const double ratio = fu.u[k] / fs.u[k], rs = sim.drum_radius, ra = big.drum_radius, e = cs.mean_flux_depth;
+  const double ratio = fu.u[k] / fs.u[k], rs = sim.drum_radius, ra = big.drum_radius;
+  const double e = coupling::phi_u_eta_integral(fs, 0) / coupling::phi_u_integral(fs, 0);  // section 0's eta_bar
   const double expected = (ra / rs) * (rs - e) / (ra - e);
   std::printf("u after conservation, receiver / DEM drum (D/d = 25): %.4f, expected %.4f (eta_bar = %.2f d)\n", ratio,
               expected, e / d);
