@@ -6,6 +6,9 @@ Reads OUT_DIR/sweep.json and writes
   OUT_DIR/sweep_map.png         outlet temperature, efficiency, k_eff and film thickness
                                 against mass flow, one line per rotational speed
   OUT_DIR/sweep_keff_parts.png  k_eff split into bed conduction, radiation and mixing per point
+Points whose DEM had not reached steady flow (outlet below 80 % of the feed over the last
+window, read from each point's summary.json) are drawn hollow: their film is still
+filling, so the flow the thermal model carries is the DEM's low outlet flow.
 Uses Debian's python3-matplotlib (hence /usr/bin/python3).
 """
 import json
@@ -24,6 +27,10 @@ def main(out):
     pts = [p for p in sweep["points"] if p.get("status") == 0 and "T_out_K" in p]
     if not pts:
         sys.exit("no successful sweep point in %s" % out)
+    for p in pts:
+        with open(os.path.join(p["dir"], "summary.json")) as fh:
+            dem = json.load(fh)["dem"]["summary"]
+        p["steady"] = dem["outlet_mdot_kg_s"] >= 0.8 * dem["inlet_mdot_kg_s"]
     speeds = sorted({p["speed_rpm"] for p in pts})
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
     panels = [("T_out_K", "outlet temperature (C)", lambda p: p["T_out_K"] - 273.15),
@@ -33,18 +40,22 @@ def main(out):
     for ax, (_, label, get) in zip(axes.flat, panels):
         for n in speeds:
             row = sorted((p for p in pts if p["speed_rpm"] == n), key=lambda p: p["mass_flow_kg_s"])
-            ax.plot([p["mass_flow_kg_s"] for p in row], [get(p) for p in row], "o-", label="%.4g rpm" % n)
+            line, = ax.plot([p["mass_flow_kg_s"] for p in row], [get(p) for p in row], "-", label="%.4g rpm" % n)
+            for p in row:
+                ax.plot(p["mass_flow_kg_s"], get(p), "o", color=line.get_color(),
+                        mfc=line.get_color() if p["steady"] else "none")
         ax.set_xlabel("receiver mass flow (kg/s)")
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
         ax.legend()
-    fig.suptitle("operating map: %s" % sweep["case"])
+    fig.suptitle("operating map: %s (hollow: DEM film still filling, outlet < 80 %% of feed)" % sweep["case"])
     fig.tight_layout()
     fig.savefig(os.path.join(out, "sweep_map.png"), dpi=120)
     plt.close(fig)
 
     fig, ax = plt.subplots(figsize=(10, 4.5))
-    names = ["%.4g rpm\n%.4g kg/s" % (p["speed_rpm"], p["mass_flow_kg_s"]) for p in pts]
+    names = ["%.4g rpm\n%.4g kg/s%s" % (p["speed_rpm"], p["mass_flow_kg_s"], "" if p["steady"] else "\n(filling)")
+             for p in pts]
     bottom = [0.0] * len(pts)
     for part in ("bed_conduction", "radiation", "mixing"):
         vals = [p["k_eff"][part] for p in pts]
