@@ -9,8 +9,10 @@ difference to REF_DIR's, and for each of the three arcs (45/90/135 deg) the axia
 profile against REF_DIR's: max over wall-distance bins sampled in both of
 |u - u_ref| / max(u_ref), i.e. the largest difference as a fraction of the reference
 profile's peak (bins of 0.5 d; a ratio of raw profiles would blow up at the wall where
-u -> 0). Also prints wall time and particle-steps/s. Writes profiles.png next to this script
-if matplotlib is available.
+u -> 0). Also prints wall time and particle-steps/s. Also the slice's axial mass flow
+(summary.json slice_mdot_kg_s, when the run wrote it) and that flow scaled back to D12 by
+eq 2 (mdot / R kept). Writes profiles.png next to this script (or PNG=path) if matplotlib
+is available.
 """
 import json
 import os
@@ -18,6 +20,7 @@ import sys
 
 import h5py
 import numpy as np
+import yaml
 
 
 def load(d):
@@ -33,8 +36,9 @@ def load(d):
 def main(ref, dirs):
     sr, yr, ur, _, theta = load(ref)
     rows = []
-    print("| run | case | free particles | film thickness d | vs ref d | max dU/Umax 45 deg | 90 deg | 135 deg | wall time s | particle-steps/s |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("| run | D/d | free particles | film thickness d | vs ref d | max dU/Umax 45 deg | 90 deg | 135 deg "
+          "| slice mdot g/s | x 100/(D/d) g/s | wall time s | particle-steps/s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for d in [ref] + dirs:
         s, y, u, su, _ = load(d)
         dev = []
@@ -43,10 +47,15 @@ def main(ref, dirs):
             peak = np.nanmax(ur[a])
             dev.append(np.max(np.abs(u[a][both] - ur[a][both])) / peak if both.any() else float("nan"))
         t = s["mean_film_thickness_d"]
+        cfg = yaml.safe_load(s["resolved_config"])["dem"]
+        dd = cfg["drum"]["diameter"] / cfg["particles"]["diameter"]
+        # eq 2 keeps mdot / R: the slice's flux scaled back to D12 (D/d = 100), paper 35.7 g/s
+        mdot = s.get("slice_mdot_kg_s")
+        flow = f"{1e3 * mdot:.2f} | {1e3 * mdot * 100 / dd:.1f}" if mdot else "- | -"
         rows.append((d, u))
-        print(f"| {os.path.basename(d.rstrip('/'))} | {s.get('title','')} | {s['free_particles']} | {t:.2f} +- {s['mean_film_thickness_std_d']:.2f} "
+        print(f"| {os.path.basename(d.rstrip('/'))} | {dd:.0f} | {s['free_particles']} | {t:.2f} +- {s['mean_film_thickness_std_d']:.2f} "
               f"| {t - sr['mean_film_thickness_d']:+.2f} | {100*dev[0]:.1f} % | {100*dev[1]:.1f} % | {100*dev[2]:.1f} % "
-              f"| {s['wall_time_s']:.0f} | {s['particle_steps_per_s']:.3g} |")
+              f"| {flow} | {s['wall_time_s']:.0f} | {s['particle_steps_per_s']:.3g} |")
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -60,7 +69,7 @@ def main(ref, dirs):
             ax.set_xlabel("wall distance / d")
         axes[0].set_ylabel("axial velocity, m/s")
         axes[0].legend()
-        out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "profiles.png")
+        out = os.environ.get("PNG", os.path.join(os.path.dirname(os.path.abspath(__file__)), "profiles.png"))
         fig.tight_layout()
         fig.savefig(out, dpi=100)
         print("wrote", out)
