@@ -29,11 +29,16 @@ std::string fmt(const char* f, A... a) {
   return s;
 }
 
-// LIGGGHTS seeds must be distinct primes above 10000 (the 1e6-th, 2e6-th, ... primes and
-// two more LIGGGHTS itself suggests): [0] insertion, [1] distribution, [2..] size templates.
-constexpr long kSeeds[] = {15485863, 32452843, 49979687, 67867967, 86028121, 104395301,
-                           122949823, 141650939, 160481183, 179424673, 15485867, 32452867};
-constexpr std::size_t kMaxSizeClasses = sizeof kSeeds / sizeof kSeeds[0] - 2;
+// LIGGGHTS wants every random seed a distinct prime above 10000: the smallest prime at or
+// above `base` (bases far apart per use: insertion, distribution, size templates).
+long prime_seed(long base) {
+  for (long n = base;; ++n) {
+    bool prime = n > 1;
+    for (long k = 2; k * k <= n && prime; ++k) prime = n % k != 0;
+    if (prime) return n;
+  }
+}
+constexpr long kInsertSeed = 20000000, kDistributionSeed = 30000000, kTemplateSeed = 40000000;
 
 struct Box {
   double lo[3], hi[3];
@@ -124,7 +129,6 @@ std::string size_templates(const dem::scene::ParticleSpec& p) {
     classes.push_back({d, 1.0});
   } else {
     const int k = 9;
-    static_assert(k <= static_cast<int>(kMaxSizeClasses), "one seed per size template");
     const double half = p.distribution == SizeDistribution::uniform ? s : 3.0 * s;
     for (int i = 0; i < k; ++i) {
       const double x = -half + (i + 0.5) * 2.0 * half / k;  // relative deviation of the class centre
@@ -138,40 +142,78 @@ std::string size_templates(const dem::scene::ParticleSpec& p) {
   t << "# Feeder sizes: " << classes.size() << " template(s) (diameter, number fraction).\n";
   for (std::size_t i = 0; i < classes.size(); ++i)
     t << fmt("fix size%zu film particletemplate/sphere %ld atom_type 1 density constant %.9g radius constant %.17g\n",
-             i, kSeeds[2 + i], p.material.density, 0.5 * classes[i].first);
-  t << fmt("fix sizes film particledistribution/discrete/numberbased %ld %zu", kSeeds[1], classes.size());
+             i, prime_seed(kTemplateSeed + 1000 * static_cast<long>(i)), p.material.density, 0.5 * classes[i].first);
+  t << fmt("fix sizes film particledistribution/discrete/numberbased %ld %zu", prime_seed(kDistributionSeed), classes.size());
   for (std::size_t i = 0; i < classes.size(); ++i) t << fmt(" size%zu %.9g", i, classes[i].second / total);
   t << "\n";
   return t.str();
 }
 
-std::string feeder_commands(const SceneConfig& c, const LiggghtsDeckPlan& plan, double total_time) {
+// Sub-sectors of the feeder: LIGGGHTS gives all particles of one insertion fix the same
+// velocity vector, so the sector is split into parts of at most 20 deg, each fed at its
+// share of the mass flow with the wall's tangent at its own centre (direction within 10 deg
+// of the native feeder's per-particle tangent).
+int feeder_parts(double arc_angle) { return std::max(1, static_cast<int>(std::ceil(arc_angle / (20.0 * M_PI / 180.0)))); }
+
+// Where the feeder may put particle centres (the native feeder's rule): the sector shrunk
+// by the largest radius r in r, theta (by r / rc) and z, never below 2 % of d across.
+struct FeederCentres {
+  double r_in, r_out, z0, z1, a0, arc;
+};
+
+FeederCentres feeder_centres(const SceneConfig& c) {
   const auto& f = c.feeder;
   const double R = 0.5 * c.drum.diameter, rc = R - f.radial_offset;
-  const double r_in = rc - 0.5 * f.radial_height, r_out = rc + 0.5 * f.radial_height;
-  const double half = 0.5 * f.arc_width / rc, a0 = f.angle - half, a1 = f.angle + half;
-  const double z0 = f.axial_start, z1 = f.axial_start + f.axial_length;
-  const double speed = c.drum.omega * R;  // the wall's linear speed, signed with the spin
+  const double r = 0.5 * dem::scene::SizeSampler(c.particle, 0).max_diameter(), m = 0.01 * c.particle.diameter;
+  const double hr = std::max(m, 0.5 * f.radial_height - r), hz = std::max(m, 0.5 * f.axial_length - r);
+  const double arc = std::min(2.0 * M_PI, std::max(m / rc, (f.arc_width - 2.0 * r) / rc));
+  const double zc = f.axial_start + 0.5 * f.axial_length;
+  return {rc - hr, rc + hr, zc - hz, zc + hz, f.angle - 0.5 * arc, arc};
+}
+
+std::string feeder_commands(const SceneConfig& c, const LiggghtsDeckPlan& plan, double total_time) {
+  const auto& f = c.feeder;
+  const FeederCentres fc = feeder_centres(c);
+  const double arc = fc.arc;
+  const double speed = c.drum.omega * 0.5 * c.drum.diameter;  // the wall's linear speed, signed with the spin
+  const int parts = feeder_parts(arc);
   std::ostringstream s;
   s << "\n# --- Feeder (DESIGN.md section 4): an annular sector centred radial_offset inside the wall,\n"
-       "# r in [rc - h/2, rc + h/2], theta within arc_width/2 of the feeder angle, z in\n"
+       "# r in [rc - h/2, rc + h/2], theta within arc_width/(2 rc) of the feeder angle, z in\n"
        "# [axial_start, axial_start + axial_length]; particles enter at the mass flow rate with the\n"
-       "# wall's tangential speed omega R and no axial velocity. LIGGGHTS gives every particle one\n"
-       "# velocity vector: the tangent at the feeder's centre angle (the native feeder uses the\n"
-       "# tangent at each particle's own angle; they differ by at most arc_width/(2 rc) in direction).\n";
+       "# wall's tangential speed omega R and no axial velocity. One LIGGGHTS insertion gives all\n"
+       "# its particles one velocity, so the sector is split into "
+    << parts << " part(s) of equal angle, each fed at\n"
+       "# its share of the rate with the tangent at its centre. The regions hold the particle\n"
+       "# centres (the sector shrunk by the largest radius, as the native feeder places them), so\n"
+       "# all_in is off. maxattempt = feeder.max_attempts.\n";
   s << size_templates(c.particle);
-  s << fmt("region feed_outer cylinder z 0 0 %.17g %.17g %.17g side in units box\n", r_out, z0, z1);
-  s << fmt("region feed_inner cylinder z 0 0 %.17g %.17g %.17g side out units box\n", std::max(r_in, 1e-9), z0, z1);
-  // Half-planes through the axis; a plane region's inside is where its normal points.
-  s << fmt("region feed_a plane 0 0 0 %.17g %.17g 0 side in units box\n", -std::sin(a0), std::cos(a0));
-  s << fmt("region feed_b plane 0 0 0 %.17g %.17g 0 side in units box\n", std::sin(a1), -std::cos(a1));
-  s << "region feeder intersect 4 feed_outer feed_inner feed_a feed_b units box\n";
-  // The total mass is an upper bound (rate x whole run + 5 %): insertion never runs out.
-  s << fmt("fix feed film insert/rate/region seed %ld distributiontemplate sizes mass %.9g massrate %.17g "
-           "insert_every %lld overlapcheck yes all_in yes vel constant %.17g %.17g 0 region feeder ntry_mc 10000\n",
-           kSeeds[0], 1.05 * f.mass_flow * total_time + 1e-9, f.mass_flow, static_cast<long long>(plan.flow_every),
-           -std::sin(f.angle) * speed, std::cos(f.angle) * speed);
+  s << fmt("region feed_outer cylinder z 0 0 %.17g %.17g %.17g side in units box\n", fc.r_out, fc.z0, fc.z1);
+  s << fmt("region feed_inner cylinder z 0 0 %.17g %.17g %.17g side out units box\n", fc.r_in, fc.z0, fc.z1);
+  for (int k = 0; k < parts; ++k) {
+    const double a0 = fc.a0 + k * arc / parts, a1 = a0 + arc / parts, am = 0.5 * (a0 + a1);
+    // A wedge of less than 180 deg: the intersection of two half-planes through the axis
+    // (a plane region's inside is where its normal points).
+    s << fmt("region feed%d_a plane 0 0 0 %.17g %.17g 0 side in units box\n", k, -std::sin(a0), std::cos(a0));
+    s << fmt("region feed%d_b plane 0 0 0 %.17g %.17g 0 side in units box\n", k, std::sin(a1), -std::cos(a1));
+    s << fmt("region feeder%d intersect 4 feed_outer feed_inner feed%d_a feed%d_b units box\n", k, k, k);
+    // The total mass is an upper bound (rate x whole run + 5 %): insertion never runs out.
+    s << fmt("fix feed%d film insert/rate/region seed %ld distributiontemplate sizes mass %.9g massrate %.17g "
+             "insert_every %lld overlapcheck yes all_in no maxattempt %d vel constant %.17g %.17g 0 "
+             "region feeder%d ntry_mc 10000\n",
+             k, prime_seed(kInsertSeed + 1000 * k), (1.05 * f.mass_flow * total_time + 1e-9) / parts,
+             f.mass_flow / parts, static_cast<long long>(plan.flow_every), f.max_attempts, -std::sin(am) * speed,
+             std::cos(am) * speed, k);
+  }
   return s.str();
+}
+
+// "f_feed0[2]+f_feed1[2]+...": the mass inserted by all feeder parts.
+std::string fed_mass_expression(const SceneConfig& c) {
+  const int parts = feeder_parts(feeder_centres(c).arc);
+  std::string e;
+  for (int k = 0; k < parts; ++k) e += (k ? "+f_feed" : "f_feed") + std::to_string(k) + "[2]";
+  return e;
 }
 
 std::string deck(const CaseFile& cf, const DemCase& dc, const LiggghtsDeckPlan& plan) {
@@ -249,8 +291,8 @@ std::string deck(const CaseFile& cf, const DemCase& dc, const LiggghtsDeckPlan& 
   s << "\n# --- Mass-flow record every feeder interval: time, fed, out (kg, cumulative), holdup (kg), free\n"
        "# particles. Atoms lost through the box (none expected) show as holdup missing from the balance.\n"
        "variable t equal step*dt\n"
-    << (fed ? "variable fed equal f_feed[2]\nvariable out equal f_outlet[1]\n"
-            : "variable fed equal 0\nvariable out equal 0\n")
+    << (fed ? "variable fed equal " + fed_mass_expression(c) + "\nvariable out equal f_outlet[1]\n"
+            : std::string("variable fed equal 0\nvariable out equal 0\n"))
     << "variable holdup equal mass(film)\n"
        "variable nfilm equal count(film)\n"
     << fmt("fix flowlog all print %lld \"${t} ${fed} ${out} ${holdup} ${nfilm}\" file %s screen no\n",
