@@ -57,6 +57,9 @@ CoupledRun run_coupled_case(const CaseFile& cf, const RunOptions& o) {
   CoupledRun r;
   r.thermal = *cf.thermal;
   r.film_from_dem = r.thermal.film_source == "dem";
+  if (!r.film_from_dem && (o.speed_rpm > 0.0 || o.mass_flow > 0.0))
+    throw std::invalid_argument(cf.path + ": --speed-rpm / --mass-flow change the DEM, but this case takes its film "
+                                          "from " + r.thermal.film_source + " (no DEM to rerun)");
   if (r.film_from_dem) {
     if (!cf.dem) throw std::invalid_argument(cf.path + ": give a `dem:` section or `film: {file: ...}`");
     effective_dem(cf, o, r);
