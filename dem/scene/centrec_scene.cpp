@@ -48,6 +48,8 @@ void check(const SceneConfig& c) {
   if (!(R > 10.0 * d)) throw std::invalid_argument("drum.diameter must exceed 20 particle diameters");
   if (c.drum.lip_height < 0.0 || c.drum.lip_height > 0.5 * R)
     throw std::invalid_argument("drum.lip_height must be in [0, R/2]");
+  if (c.slice.enabled && c.drum.lip_height > 0.0)
+    throw std::invalid_argument("drum.lip_height: a periodic slice has no outlet, so no lip (set it to 0)");
   if (c.slice.enabled && c.slice.length < 3.0 * d)
     throw std::invalid_argument("slice.length must be at least 3 particle diameters");
   if (c.feeder.enabled && !c.slice.enabled) {
