@@ -107,6 +107,12 @@ SETTINGS = [
     # wall rolling model only matters on the smooth wall: compare it there, on the lip
     # that holds the most.
     ("lip3_liggghts", "rolling", "lip 3 d, LIGGGHTS wall rolling", _merge(_lip(3), _LIGGGHTS)),
+    # Second round, between the first round's neighbours: square 1.0 d holds ~0.76 of the
+    # paper's film steadily, square 1.3 d over-holds and locks two layers; a size spread
+    # is the suspect for the locking (DESIGN.md section 4).
+    ("rough_sq1.15", "combined", "rough square 1.15 d", _rough("square", 1.15)),
+    ("rough_sq1.3_spread10", "combined", "rough square 1.3 d, sizes +-10 %",
+     _merge(_rough("square", 1.3), _spread(0.10))),
 ]
 
 

@@ -12,12 +12,17 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-GROUP_COLOURS = {"lip": "tab:blue", "rough": "tab:green", "spread": "tab:orange", "rolling": "tab:purple"}
+from retention_metrics import NO_FILM_RATIO  # noqa: E402
+
+GROUP_COLOURS = {"lip": "tab:blue", "rough": "tab:green", "spread": "tab:orange", "rolling": "tab:purple",
+                 "combined": "tab:red"}
 
 
 def closeness(r):
     """Distance from the paper's film, for ranking: holdup error (in units of the 10 % bar),
     flatness (units of 0.2 d), standing layer above 1 d (units of 0.5 d), no exit thinning."""
+    if r["holdup_ratio"] < NO_FILM_RATIO:
+        return float("inf")
     return (abs(r["holdup_ratio"] - 1.0) / 0.1 + r["flatness_d"] / 0.2
             + max(0.0, r["standing_height_max_d"] - 1.0) / 0.5 + (r["exit_drop_d"] <= 0.0))
 
@@ -33,7 +38,8 @@ def draw_holdup(rows, path):
     ax.axvline(1.0, color="k", lw=1)
     ax.set_yticks(y, [r["label"] for r in rows], fontsize=8)
     ax.invert_yaxis()
-    ax.set_xlabel("particles held (free + glued) / paper's scaled holdup   (drift of the holdup in brackets)")
+    ax.set_xlim(0, max(1.3, max(r["holdup_ratio"] for r in rows) + 0.3))
+    ax.set_xlabel("held (free + glued) / paper's scaled holdup  (holdup drift, %/s)")
     ax.set_title("Retention study, D12 scaled to D/d = 25: holdup by setting")
     ax.legend(loc="lower right", fontsize=8)
     fig.tight_layout()
@@ -58,10 +64,13 @@ def draw_thickness(rows, drum, path):
     for ax, g in zip(axes[0], groups):
         paper_shape(ax, drum)
         for r in rows:
-            if r["group"] == g or (g in ("spread", "rolling") and r["name"] in ("rough_sq1.0", "lip3")):
+            if r["holdup_ratio"] < NO_FILM_RATIO:
+                continue  # no film: eqs 4-7 would average a trickle
+            if r["group"] == g or (g in ("spread", "rolling", "combined") and r["name"] in ("rough_sq1.0", "lip3")):
                 ax.errorbar(r["z_over_length"], r["thickness_d"], yerr=r["thickness_std_d"], marker="o", ms=3,
                             capsize=2, lw=1, label=r["label"])
         ax.set_xlabel("z / L  (0 inlet, 1 outlet)")
+        ax.set_ylim(0, 7)  # the feeder's region near z = 0 reads higher: not film
         ax.set_title(g)
         ax.legend(fontsize=6)
     axes[0][0].set_ylabel("eqs 4-7 film thickness [d]")
@@ -85,7 +94,7 @@ def draw_profiles(rows, path, count=4):
             ax.errorbar(w[pop], u[pop], yerr=np.array(a["u_std"])[pop], marker="o", ms=2.5, lw=1, capsize=1.5,
                         color=f"C{i}", label=r["label"])
             if np.isfinite(a["line_slope"]):
-                x = np.array([1.0, a["thickness_d"]])
+                x = np.array([1.0, a["thickness_d"] + 0.5])
                 ax.plot(x, a["line_slope"] * (x - 1.0), color=f"C{i}", ls="--", lw=0.8)
         ax.axvline(1.0, color="grey", lw=0.5)
         ax.set_title(f"theta {best[0]['arcs'][k]['theta_deg']:.0f} deg, z/L {best[0]['arcs'][k]['z_over_length']:.1f}",
