@@ -81,7 +81,10 @@ def draw_thickness(rows, drum, path):
 
 
 def draw_profiles(rows, path, count=4):
-    best = sorted(rows, key=closeness)[:count]
+    """The closest settings and the closest lip, against the paper's line from 1 d."""
+    ranked = sorted(rows, key=closeness)
+    best_lip = next((r for r in ranked if r["group"] == "lip"), None)
+    best = ranked[: count - 1] + ([best_lip] if best_lip and best_lip not in ranked[: count - 1] else ranked[count - 1:count])
     n = len(best[0]["arcs"])
     fig, axes = plt.subplots(3, (n + 2) // 3, figsize=(11, 9), squeeze=False, sharex=True)
     for k in range(n):

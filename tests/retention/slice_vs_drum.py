@@ -54,9 +54,10 @@ def profiles_by_angle(m, z_pick=None):
 
 
 def profile_error(u_slice, u_drum, w, t_drum):
-    """RMS difference over 1 d <= eta <= t - 0.5 d, over the drum's surface velocity."""
-    sel = (w >= 1.0) & (w <= t_drum - 0.5)
-    return float(np.sqrt(np.mean((u_slice[sel] - u_drum[sel]) ** 2)) / np.max(u_drum))
+    """RMS difference over the film (1 d <= eta <= t + 0.5 d, as retention_metrics.in_film),
+    over the drum's surface velocity there."""
+    sel = (w >= 1.0) & (w <= t_drum + 0.5) & np.isfinite(u_slice) & np.isfinite(u_drum)
+    return float(np.sqrt(np.mean((u_slice[sel] - u_drum[sel]) ** 2)) / np.nanmax(u_drum[sel]))
 
 
 def slice_dem(drum_dem, length_d, mass_per_length):
