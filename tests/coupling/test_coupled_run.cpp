@@ -23,8 +23,9 @@ namespace fs = std::filesystem;
 
 namespace {
 const std::string kCase = std::string(CENTREC_SOURCE_DIR) + "/tests/coupling/small_coupled.yaml";
-// Stored by the first run of this test (2D, 60 x 12; DEM deterministic at any thread count).
-constexpr double kStoredTout = 1183.18;
+// Stored by a run of this test (2D, 60 x 12; DEM deterministic at any thread count and, with
+// -ffp-contract=off, in Release and sanitizer builds alike: 1185.096261 K in both).
+constexpr double kStoredTout = 1185.10;
 
 std::string tmp_dir() {
   const fs::path p = fs::temp_directory_path() / ("centrec_coupled_" + std::to_string(::getpid()));
