@@ -7,7 +7,7 @@ Reads OUT_DIR/sweep.json and writes
                                 against mass flow, one line per rotational speed
   OUT_DIR/sweep_keff_parts.png  k_eff split into bed conduction, radiation and mixing per point
 Points whose DEM had not reached steady flow (outlet below 80 % of the feed over the last
-window, read from each point's summary.json) are drawn hollow: their film is still
+window; `dem_flow_steady` in sweep.json, `filling` in sweep.csv) are drawn hollow: their film is still
 filling, so the flow the thermal model carries is the DEM's low outlet flow.
 Uses Debian's python3-matplotlib (hence /usr/bin/python3).
 """
@@ -28,9 +28,7 @@ def main(out):
     if not pts:
         sys.exit("no successful sweep point in %s" % out)
     for p in pts:
-        with open(os.path.join(p["dir"], "summary.json")) as fh:
-            dem = json.load(fh)["dem"]["summary"]
-        p["steady"] = dem["outlet_mdot_kg_s"] >= 0.8 * dem["inlet_mdot_kg_s"]
+        p["steady"] = p["dem_flow_steady"]  # decided by centrec sweep (cmd_sweep.cpp)
     speeds = sorted({p["speed_rpm"] for p in pts})
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
     panels = [("T_out_K", "outlet temperature (C)", lambda p: p["T_out_K"] - 273.15),

@@ -43,6 +43,8 @@ TEST(SweepCli, TwoPointsInParallelGiveATable) {
   const auto& b = j["points"][1];
   EXPECT_EQ(a["status"], 0);
   EXPECT_EQ(b["status"], 0);
+  EXPECT_TRUE(a.contains("dem_flow_steady"));
+  EXPECT_TRUE(b.contains("dem_flow_steady"));
   EXPECT_GT(a["T_out_K"].get<double>(), 873.15);
   EXPECT_GT(a["k_eff"]["k_eff"].get<double>(), 0.0);
   // Different feeds, different DEM films, different answers.
