@@ -6,6 +6,8 @@
 // particles between DEM and thermal are refused.
 #include <gtest/gtest.h>
 
+#include "tests/test_case_dir.hpp"
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -27,11 +29,6 @@ const std::string kCase = std::string(CENTREC_SOURCE_DIR) + "/tests/coupling/sma
 // -ffp-contract=off, in Release and sanitizer builds alike: 1185.096261 K in both).
 constexpr double kStoredTout = 1185.10;
 
-std::string tmp_dir() {
-  const fs::path p = fs::temp_directory_path() / ("centrec_coupled_" + std::to_string(::getpid()));
-  fs::create_directories(p);
-  return p.string();
-}
 
 // The case with its text edited (thermal-only or particle changes).
 CaseFile edited_case(const std::string& dir, const std::string& from, const std::string& to) {
@@ -46,7 +43,7 @@ CaseFile edited_case(const std::string& dir, const std::string& from, const std:
 }  // namespace
 
 TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
-  const std::string dir = tmp_dir();
+  const std::string dir = centrec::testing::temp_dir("coupled");
   RunOptions o;
   o.cache_dir = dir + "/cache";
   const CaseFile cf = read_case_file(kCase);
@@ -101,7 +98,7 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
 }
 
 TEST(CoupledRun, ThermalParticlesMustMatchTheDem) {
-  const std::string dir = tmp_dir();
+  const std::string dir = centrec::testing::temp_dir("coupled");
   const CaseFile cf = edited_case(dir, "  T_in: 873.15", "  material: {d: 1.0e-3}\n  T_in: 873.15");
   RunOptions o;
   o.cache_dir = dir + "/cache";

@@ -2,6 +2,8 @@
 // wrong (issue 5 item 6), both when read directly and through a case's `film.file`.
 #include <gtest/gtest.h>
 
+#include "tests/test_case_dir.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -16,11 +18,6 @@ using namespace centrec;
 namespace fs = std::filesystem;
 
 namespace {
-std::string tmp_dir() {
-  const fs::path p = fs::temp_directory_path() / ("centrec_film_errors_" + std::to_string(::getpid()));
-  fs::create_directories(p);
-  return p.string();
-}
 
 thermal::FilmField good_film() { return coupling::map_dem_film(test::synthetic_dem_film(0.12)).film; }
 
@@ -52,7 +49,7 @@ std::string case_error(const std::string& dir, const std::string& film_path) {
 }  // namespace
 
 TEST(FilmFileErrors, CorruptedFileNamesTheFile) {
-  const std::string dir = tmp_dir(), path = dir + "/film.h5";
+  const std::string dir = centrec::testing::temp_dir("film_errors"), path = dir + "/film.h5";
   write(path, good_film());
   // Overwrite the middle of the file with garbage (a truncated copy or a disk error).
   const auto size = fs::file_size(path);
@@ -68,7 +65,7 @@ TEST(FilmFileErrors, CorruptedFileNamesTheFile) {
 }
 
 TEST(FilmFileErrors, MismatchedShapesAndParticlesAreRefused) {
-  const std::string dir = tmp_dir();
+  const std::string dir = centrec::testing::temp_dir("film_errors");
   thermal::FilmField f = good_film();
   // u written for one wall-distance point fewer than eta has.
   {

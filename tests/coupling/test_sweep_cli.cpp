@@ -3,6 +3,8 @@
 // temperature and k_eff, the points differ, and a sweep of a case without a DEM is refused.
 #include <gtest/gtest.h>
 
+#include "tests/test_case_dir.hpp"
+
 #include <unistd.h>
 
 #include <cstdlib>
@@ -16,15 +18,10 @@ namespace fs = std::filesystem;
 namespace {
 const std::string kCase = std::string(CENTREC_SOURCE_DIR) + "/tests/coupling/small_coupled.yaml";
 
-std::string tmp_dir() {
-  const fs::path p = fs::temp_directory_path() / ("centrec_sweep_" + std::to_string(::getpid()));
-  fs::create_directories(p);
-  return p.string();
-}
 }  // namespace
 
 TEST(SweepCli, TwoPointsInParallelGiveATable) {
-  const std::string dir = tmp_dir();
+  const std::string dir = centrec::testing::temp_dir("sweep");
   std::ifstream in(kCase);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text += "sweep: {speed_rpm: [160.08], mass_flow: [0.0357, 0.03], parallel: 2}\n";

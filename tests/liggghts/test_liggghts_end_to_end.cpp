@@ -5,6 +5,8 @@
 // (./setup.sh installs it).
 #include <gtest/gtest.h>
 
+#include "tests/test_case_dir.hpp"
+
 #include <cmath>
 #include <filesystem>
 
@@ -20,9 +22,7 @@ TEST(LiggghtsEndToEnd, ImportedHoldupEqualsTheLogsAtomCount) {
   LiggghtsLaunch launch;
   if (!liggghts_available(launch.mpirun, launch.liggghts)) GTEST_SKIP() << "mpirun/liggghts not installed";
   const CaseFile cf = read_case_file(std::string(CENTREC_SOURCE_DIR) + "/tests/liggghts/small_drum.yaml");
-  const fs::path out = fs::temp_directory_path() / ("centrec_e2e_" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  fs::create_directories(out);
+  const fs::path out = centrec::testing::fresh_dir("e2e");
   const DemRunResult r = run_dem_on_liggghts(cf, *cf.dem, out.string(), launch);
 
   const LiggghtsLogSummary log = read_liggghts_log((out / "liggghts/log.liggghts").string());

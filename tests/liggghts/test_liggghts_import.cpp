@@ -3,6 +3,8 @@
 // dump file naming, and the mass-flow record with its mass balance.
 #include <gtest/gtest.h>
 
+#include "tests/test_case_dir.hpp"
+
 #include <filesystem>
 #include <fstream>
 
@@ -14,13 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("centrec_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
 void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
 
 const char* kHeader =
@@ -30,7 +25,7 @@ const char* kHeader =
 }  // namespace
 
 TEST(LiggghtsImport, ReadsADumpIntoParticleColumns) {
-  const fs::path d = fresh_dir("dump");
+  const fs::path d = centrec::testing::fresh_dir("dump");
   write(d / "film_000000002343.dump",
         std::string(kHeader) +
             "ITEM: ATOMS id radius x y z vx vy vz \n"
@@ -73,7 +68,7 @@ TEST(LiggghtsImport, ReadsADumpIntoParticleColumns) {
 }
 
 TEST(LiggghtsImport, RefusesATruncatedOrColumnlessDump) {
-  const fs::path d = fresh_dir("bad_dump");
+  const fs::path d = centrec::testing::fresh_dir("bad_dump");
   write(d / "short.dump", std::string(kHeader) + "ITEM: ATOMS id radius x y z vx vy vz\n1 1 1 1 1 1 1 1\n");
   EXPECT_THROW(read_liggghts_dump((d / "short.dump").string(), 1e-5), std::runtime_error);
   write(d / "nocol.dump", std::string(kHeader) + "ITEM: ATOMS id x y z\n1 1 1 1\n2 2 2 2\n3 3 3 3\n");
@@ -87,7 +82,7 @@ TEST(LiggghtsImport, RefusesATruncatedOrColumnlessDump) {
 }
 
 TEST(LiggghtsImport, MassFlowRecordAndItsBalance) {
-  const fs::path d = fresh_dir("flow");
+  const fs::path d = centrec::testing::fresh_dir("flow");
   // time fed out holdup particles; the last line is being written (incomplete).
   write(d / "mass_flow.txt",
         "# Fix print output for fix flowlog\n"
