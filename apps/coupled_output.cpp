@@ -65,6 +65,7 @@ nlohmann::json coupled_summary(const CoupledRun& r) {
   const auto& c = r.conservation;
   const auto& sd = r.dem.scene;
   j["dem"] = {{"cached", r.dem_cached},
+              {"resumed_from", r.dem_resumed_from},
               {"cache_key", r.cache_key},
               {"dir", r.dem_dir},
               {"drum_diameter_m", sd.drum.diameter},

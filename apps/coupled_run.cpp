@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
@@ -69,10 +70,13 @@ CoupledRun run_coupled_case(const CaseFile& cf, const RunOptions& o) {
     // 1. DEM, or its cached outputs.
     const auto t0 = std::chrono::steady_clock::now();
     r.cache_key = dem_cache_key(resolved_dem_section(cf), r.dem, CENTREC_VERSION);
-    const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key,
-                                            [&](const std::string& dir) { run_dem_case(cf, r.dem, dir); });
+    const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key, [&](const std::string& dir, bool resume) {
+      if (resume) std::fprintf(stderr, "centrec run: continuing the interrupted DEM run in %s\n", dir.c_str());
+      run_dem_case(cf, r.dem, dir, resume ? std::optional<RunCheckpoint>(read_checkpoint(dir)) : std::nullopt);
+    });
     r.dem_dir = cached.dir;
     r.dem_cached = cached.hit;
+    r.dem_resumed_from = cached.resumed_from;
     std::ifstream js(r.dem_dir + "/summary.json");
     r.dem_summary = nlohmann::json::parse(js);
     r.dem_seconds = since(t0);

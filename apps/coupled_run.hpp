@@ -30,6 +30,7 @@ struct CoupledRun {
   bool film_from_dem = false;      // false: the case's film file was used, no DEM
   std::string dem_dir, cache_key;  // where dem.h5 came from
   bool dem_cached = false;
+  std::string dem_resumed_from;  // the killed run's cache folder this run continued ("" = none)
   nlohmann::json dem_summary;
   coupling::DemFilmAverages averages;
   coupling::TangentialAverage tangential;

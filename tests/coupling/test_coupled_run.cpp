@@ -8,6 +8,7 @@
 
 #include "tests/test_case_dir.hpp"
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include "case_file.hpp"
 #include "coupled_output.hpp"
 #include "coupled_run.hpp"
+#include "dem_cache.hpp"
 #include "film_field_h5.hpp"
 #include "h5_file.hpp"
 
@@ -68,6 +70,27 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
   EXPECT_EQ(again.cache_key, first.cache_key);
   EXPECT_EQ(again.result.balance.T_out, T1);
   EXPECT_EQ(again.thermal.film.u, first.thermal.film.u);
+
+  // A killed DEM stage leaves CACHE/<key>.tmp<pid> with its last checkpoint: the next run of
+  // the same inputs takes it over and continues from there (here the checkpoint written at
+  // the end of the first run, so the answer must be identical) instead of starting again.
+  const pid_t gone = ::fork();
+  if (gone == 0) ::_exit(0);
+  ::waitpid(gone, nullptr, 0);
+  const std::string entry = o.cache_dir + "/" + first.cache_key;
+  const std::string killed = entry + ".tmp" + std::to_string(gone);
+  fs::rename(entry, killed);
+  EXPECT_EQ(interrupted_dem_run(o.cache_dir, first.cache_key), killed);
+  const CoupledRun resumed = run_coupled_case(cf, o);
+  std::printf("resumed from %s: T_out %.6f K\n", resumed.dem_resumed_from.c_str(), resumed.result.balance.T_out);
+  EXPECT_FALSE(resumed.dem_cached);
+  EXPECT_EQ(resumed.dem_resumed_from, killed);
+  EXPECT_FALSE(fs::exists(killed));
+  EXPECT_TRUE(fs::exists(entry + "/dem.h5"));
+  EXPECT_EQ(resumed.result.balance.T_out, T1);
+  // A folder whose process is alive (this one) is another run's, not an interrupted one.
+  fs::copy(entry, entry + ".tmp" + std::to_string(::getpid()), fs::copy_options::recursive);
+  EXPECT_EQ(interrupted_dem_run(o.cache_dir, first.cache_key), "");
 
   // Thermal-only change: same DEM key, different answer.
   const CaseFile hotter = edited_case(dir, "q: 2.0e5", "q: 3.0e5");
