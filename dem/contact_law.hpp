@@ -45,9 +45,8 @@ inline ContactResult evaluate_contact(const PairConstants& c, const ContactInput
   const Vec3 vt = in.v_contact - vn * in.n;
   ContactResult out;
   out.fn = hertz_normal_force(k, in.delta, vn);
-  const TangentialResult t = mindlin_tangential(k, c.mu, out.fn, in.n, vt, old.shear, dt);
+  const TangentialResult t = mindlin_tangential(k, c.mu, out.fn, in.n, vt, old.shear, dt, out.history.shear);
   out.sliding = t.sliding;
-  out.history.shear = t.shear;
   out.history.roll = c.mu_r > 0.0 ? epsd2_rolling_torque(k.kt, in.r_eff, c.mu_r, out.fn, in.n, in.w_rel, old.roll, dt)
                                   : Vec3{};
   out.force = out.fn * in.n + t.force;

@@ -32,15 +32,16 @@ inline double hertz_normal_force(const HertzMindlinCoefficients& k, double delta
 
 struct TangentialResult {
   Vec3 force;    // tangential force on i
-  Vec3 shear;    // new tangential displacement
   bool sliding;  // Coulomb cap active
 };
 
 // shear += vt dt, projected onto the tangent plane; Ft = -kt shear; if |Ft| > mu|Fn| scale
 // Ft to mu|Fn| and set shear = -Ft/kt (no damping while sliding); else Ft -= gamma_t vt.
+// The new tangential displacement is written to `shear` (in the caller's history, so the
+// result is not merged through a stack copy that stalls store forwarding).
 inline TangentialResult mindlin_tangential(const HertzMindlinCoefficients& k, double mu, double fn, Vec3 n, Vec3 vt,
-                                           Vec3 shear_old, double dt) {
-  Vec3 shear = shear_old + dt * vt;
+                                           Vec3 shear_old, double dt, Vec3& shear) {
+  shear = shear_old + dt * vt;
   shear -= dot(shear, n) * n;
   Vec3 ft = -k.kt * shear;
   const double ft_max = mu * std::fabs(fn);
@@ -48,10 +49,10 @@ inline TangentialResult mindlin_tangential(const HertzMindlinCoefficients& k, do
   if (ft2 > ft_max * ft_max) {
     ft *= ft_max / std::sqrt(ft2);
     shear = (-1.0 / k.kt) * ft;
-    return {ft, shear, true};
+    return {ft, true};
   }
   ft -= k.gamma_t * vt;
-  return {ft, shear, false};
+  return {ft, false};
 }
 
 }  // namespace centrec::dem
