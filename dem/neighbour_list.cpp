@@ -8,7 +8,7 @@
 namespace centrec::dem {
 
 std::size_t NeighbourList::bytes() const {
-  return (start.capacity() + rev_start.capacity() + rev_entry.capacity()) * sizeof(std::uint32_t) +
+  return (start.capacity() + rev_start.capacity() + rev_pos.capacity()) * sizeof(std::uint32_t) +
          nbr.capacity() * sizeof(std::int32_t) + hist.capacity() * sizeof(ContactHistory);
 }
 
@@ -168,9 +168,9 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
   out.rev_start.assign(static_cast<std::size_t>(n) + 1, 0);
   for (std::int32_t j : out.nbr) ++out.rev_start[static_cast<std::size_t>(j) + 1];
   for (long j = 0; j < n; ++j) out.rev_start[j + 1] += out.rev_start[j];
-  out.rev_entry.resize(out.nbr.size());
+  out.rev_pos.resize(out.nbr.size());
   std::vector<std::uint32_t> fill(out.rev_start.begin(), out.rev_start.end() - 1);
-  for (std::uint32_t e = 0; e < out.nbr.size(); ++e) out.rev_entry[fill[static_cast<std::size_t>(out.nbr[e])]++] = e;
+  for (std::uint32_t e = 0; e < out.nbr.size(); ++e) out.rev_pos[e] = fill[static_cast<std::size_t>(out.nbr[e])]++;
 }
 
 }  // namespace centrec::dem

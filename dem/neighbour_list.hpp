@@ -1,9 +1,10 @@
 #pragma once
 // Cell grid, spatial sort and half Verlet neighbour lists with contact history
 // (DESIGN.md section 3). Pair (i, j), i < j by index, is stored once, in row i, with its
-// history; the reverse index (rev_start/rev_entry) lists for each j the entries naming it,
-// in increasing entry order, so forces on j can be gathered in a fixed order (bitwise
-// determinism for any thread count) instead of scattered with atomics.
+// history; the reverse index (rev_start/rev_pos) numbers the entries naming each j, grouped
+// by j in increasing entry order, so forces on j can be parked in that order and gathered
+// in a fixed order (bitwise determinism for any thread count) instead of scattered with
+// atomics, reading the parked values as one sequential stream.
 // History is kept in the pair's canonical orientation (lower particle id = "i" of the
 // contact law), so re-sorting never flips it.
 #include <cstdint>
@@ -24,8 +25,8 @@ struct NeighbourList {
   std::vector<std::uint32_t> start;  // rows + 1 offsets into nbr/hist
   std::vector<std::int32_t> nbr;     // partner index
   std::vector<ContactHistory> hist;  // history of the pair (zero = not in contact)
-  std::vector<std::uint32_t> rev_start;  // rows + 1 offsets into rev_entry
-  std::vector<std::uint32_t> rev_entry;  // entries e with nbr[e] == j, grouped by j
+  std::vector<std::uint32_t> rev_start;  // rows + 1: entries naming j have rev_pos in [rev_start[j], rev_start[j + 1])
+  std::vector<std::uint32_t> rev_pos;    // per entry: its position in that order (grouped by nbr, then by entry)
   std::size_t rows() const { return start.empty() ? 0 : start.size() - 1; }
   std::size_t bytes() const;
 };

@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "dem/first_half_step.hpp"
 #include "dem/simulation_impl.hpp"
 #include "dem/sphere_mass.hpp"
 
@@ -27,9 +28,6 @@ template <class T>
 std::size_t bytes_of(const std::vector<T>& a) {
   return a.capacity() * sizeof(T);
 }
-
-// Rotates u about the unit axis k by the angle whose cosine and sine are given (Rodrigues).
-inline Vec3 rotate(Vec3 u, Vec3 k, double c, double s) { return c * u + s * cross(k, u) + ((1.0 - c) * dot(k, u)) * k; }
 
 // Walls a particle may touch before the next rebuild (it moves at most skin/2 meanwhile).
 bool wall_candidate(const Wall& w, Vec3 p, double r, double margin) {
@@ -286,7 +284,7 @@ void Simulation::resolve_time_step() {
 void Simulation::setup() {
   resolve_time_step();
   rebuild();
-  compute_forces(false);  // as LIGGGHTS set-up: forces without advancing the history
+  compute_forces(false, AfterForces::nothing);  // as LIGGGHTS set-up: forces without advancing the history
   ready_ = true;
 }
 
@@ -313,6 +311,7 @@ void Simulation::rebuild() {
   build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.pz, carried, threads_);
   im.touch.resize(im.list.nbr.size());
   for (std::size_t e = 0; e < im.touch.size(); ++e) im.touch[e] = !is_zero(im.list.hist[e]);
+  im.share.assign(im.list.nbr.size(), Impl::PartnerShare{});
   im.carried = NeighbourList{};
 
   const std::size_t n = x_.size();
@@ -343,11 +342,11 @@ bool Simulation::scene_symmetric_about_drum() const {
   return true;
 }
 
-void Simulation::report_blow_up(std::size_t i, double overlap, const std::string& partner) const {
+void Simulation::report_blow_up(std::size_t i, Vec3 x, double overlap, const std::string& partner) const {
   std::ostringstream msg;
   msg.precision(4);
-  msg << "DEM blow-up at step " << step_ << " (t = " << time_ << " s): particle id " << id_[i] << " at (" << x_[i].x
-      << ", " << x_[i].y << ", " << x_[i].z << ") m";
+  msg << "DEM blow-up at step " << step_ << " (t = " << time_ << " s): particle id " << id_[i] << " at (" << x.x
+      << ", " << x.y << ", " << x.z << ") m";
   if (std::isfinite(overlap)) {
     msg << " has overlap " << overlap << " m = " << 100.0 * overlap / r_[i] << " % of its radius with " << partner
         << " (limit " << 100.0 * blowup_fraction_ << " %)";
@@ -367,61 +366,49 @@ void Simulation::report_blow_up(std::size_t i, double overlap, const std::string
   throw BlowUpError(msg.str());
 }
 
-double Simulation::integrate_first_half() {
-  const long n = static_cast<long>(x_.size());
-  const double dt = dt_, half = 0.5 * dt_;
-  const DrumMotion& drum = cfg_.drum;
-  const double c = std::cos(drum.omega * dt), s = std::sin(drum.omega * dt);
-  const Vec3 spin = drum.omega * drum.axis;
-  const PeriodicZ pz = impl_->pz;
-  const Vec3* xb = impl_->x_build.data();
-  if (impl_->drum_frame) impl_->angle_since_build += drum.omega * dt;
-  const double cb = std::cos(impl_->angle_since_build), sb = std::sin(impl_->angle_since_build);
-  double max_d2 = 0.0;
-#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles) reduction(max : max_d2)
-  for (long i = 0; i < n; ++i) {
-    if (motion_[i] == Motion::free) {
-      v_[i] += (half * inv_m_[i]) * f_[i];
-      w_[i] += (half * inv_inertia_[i]) * t_[i];
-      x_[i] += dt * v_[i];
-    } else {  // rigidly with the drum: exact rotation of the position
-      const Vec3 rel = rotate(x_[i] - drum.origin, drum.axis, c, s);
-      x_[i] = drum.origin + rel;
-      v_[i] = cross(spin, rel);
-      w_[i] = spin;
-    }
-    x_[i].z = pz.wrap(x_[i].z);
-    Vec3 d = x_[i] - (drum.origin + rotate(xb[i] - drum.origin, drum.axis, cb, sb));
-    d.z = pz.image(d.z);
-    const double d2 = norm2(d);
-    // NaN compares false: force a rebuild so the force pass reports it.
-    max_d2 = std::max(max_d2, d2 == d2 ? d2 : std::numeric_limits<double>::infinity());
-  }
-  return max_d2;
+FirstHalfStep Simulation::begin_first_half() {
+  FirstHalfStep h;
+  h.dt = dt_;
+  h.half = 0.5 * dt_;
+  h.drum = cfg_.drum;
+  h.c = std::cos(h.drum.omega * dt_);
+  h.s = std::sin(h.drum.omega * dt_);
+  h.spin = h.drum.omega * h.drum.axis;
+  if (impl_->drum_frame) impl_->angle_since_build += h.drum.omega * dt_;
+  h.cb = std::cos(impl_->angle_since_build);
+  h.sb = std::sin(impl_->angle_since_build);
+  h.pz = impl_->pz;
+  return h;
 }
 
-void Simulation::integrate_second_half() {
+double Simulation::integrate_first_half() {
   const long n = static_cast<long>(x_.size());
-  const double half = 0.5 * dt_;
-#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
-  for (long i = 0; i < n; ++i) {
-    if (motion_[i] != Motion::free) continue;
-    v_[i] += (half * inv_m_[i]) * f_[i];
-    w_[i] += (half * inv_inertia_[i]) * t_[i];
-  }
+  const FirstHalfStep h = begin_first_half();
+  const Vec3* xb = impl_->x_build.data();
+  double max_d2 = 0.0;
+#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles) reduction(max : max_d2)
+  for (long i = 0; i < n; ++i)
+    max_d2 = std::max(max_d2, h.advance(motion_[i], inv_m_[i], inv_inertia_[i], f_[i], t_[i], xb[i], x_[i], v_[i], w_[i]));
+  return max_d2;
 }
 
 void Simulation::step(std::int64_t nsteps) {
   if (!ready_) setup();
+  // Within one call the gather pass of step s also does the first half of step s + 1
+  // (same operations in the same order as separate sweeps: results are unchanged); the
+  // last step of the call ends with the second half kick, so between calls the state is
+  // the usual end-of-step state. dirty_ changes only between calls.
+  double max_d2 = 0.0;
+  bool started = false;  // this step's first half already done by the previous gather pass
   for (std::int64_t s = 0; s < nsteps; ++s) {
     if (dirty_) rebuild();
-    const double max_d2 = integrate_first_half();
+    if (!started) max_d2 = integrate_first_half();
     for (Wall& w : walls_) w.origin += dt_ * w.velocity;
     ++step_;
     time_ += dt_;
     if (max_d2 > 0.25 * impl_->skin * impl_->skin) rebuild();  // moved more than skin/2
-    compute_forces(true);
-    integrate_second_half();
+    started = s + 1 < nsteps;
+    max_d2 = compute_forces(true, started ? AfterForces::second_and_next_first_half : AfterForces::second_half);
   }
 }
 

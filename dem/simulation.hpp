@@ -32,6 +32,8 @@
 
 namespace centrec::dem {
 
+struct FirstHalfStep;  // dem/first_half_step.hpp
+
 // Rolling model of particle-wall contacts (DESIGN.md section 3).
 enum class WallRolling : std::uint8_t {
   relative,  // w_rel = w_i - wall angular velocity (physical; default)
@@ -165,14 +167,21 @@ class Simulation {
   struct Impl;  // neighbour lists, histories, scratch
   void rebuild();
   void resolve_time_step();  // dt_ and the blow-up limit from the advice (setup's first half)
-  void compute_forces(bool update_history);
+  // What the gather pass of compute_forces does to each particle once its force and torque
+  // are complete: nothing (set-up), the second half kick (last step of a step() call), or
+  // that kick and then the next step's first half (kick, drift), saving two sweeps.
+  enum class AfterForces : std::uint8_t { nothing, second_half, second_and_next_first_half };
+  // Returns the largest squared displacement since the last build after the next step's
+  // first half (AfterForces::second_and_next_first_half), else 0.
+  double compute_forces(bool update_history, AfterForces after);
   double integrate_first_half();  // returns the largest squared displacement since the last build
-  void integrate_second_half();
+  FirstHalfStep begin_first_half();  // the constants of this step's first half
   bool scene_symmetric_about_drum() const;
   void invalidate_list();  // particles or walls changed: carry contacts, rebuild before the next step
   void permute_particles(const std::vector<std::int32_t>& order);
   void update_pair_constants();
-  [[noreturn]] void report_blow_up(std::size_t i, double overlap, const std::string& partner) const;
+  // x: the particle's position when the blow-up was detected (the gather pass may have moved it since).
+  [[noreturn]] void report_blow_up(std::size_t i, Vec3 x, double overlap, const std::string& partner) const;
   PairConstants const& pair(int a, int b) const { return pc_[static_cast<std::size_t>(a) * n_mat_ + b]; }
 
   SimulationConfig cfg_;

@@ -6,18 +6,17 @@
 #include <string>
 
 #include "dem/contact_law.hpp"
+#include "dem/first_half_step.hpp"
 #include "dem/simulation_impl.hpp"
 
 namespace centrec::dem {
 
-void Simulation::compute_forces(bool update_history) {
+double Simulation::compute_forces(bool update_history, AfterForces after) {
   Impl& im = *impl_;
   const long n = static_cast<long>(x_.size());
   const long nblocks = (n + kBlock - 1) / kBlock;
   const std::size_t nw = walls_.size();
   if (im.tallies.size() < static_cast<std::size_t>(nblocks)) im.tallies.resize(static_cast<std::size_t>(nblocks));
-  const std::size_t entries = im.list.nbr.size();
-  if (im.share.size() < entries) im.share.resize(entries);
   const double dt = dt_;
   const double limit = blowup_fraction_;
   const bool relative_rolling = cfg_.wall_rolling == WallRolling::relative;
@@ -29,6 +28,7 @@ void Simulation::compute_forces(bool update_history) {
   ContactHistory* whist = im.wall_hist.data();
   std::uint8_t* touch = im.touch.data();
   Impl::PartnerShare* share = im.share.data();
+  const std::uint32_t* rev_pos = im.list.rev_pos.data();
   const Vec3 *X = x_.data(), *V = v_.data(), *Wv = w_.data();
   const double *R = r_.data(), *M = m_.data();
   const std::int64_t* ID = id_.data();
@@ -36,7 +36,7 @@ void Simulation::compute_forces(bool update_history) {
   const Motion* MOT = motion_.data();
 
   // Pass 1: each pair once, in the row of its lower index. The row owner's share is summed
-  // at once; the partner's share is parked per entry for pass 2.
+  // at once; the partner's share is parked for pass 2 at the entry's reverse position.
 #pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
   for (long b = 0; b < nblocks; ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
@@ -59,6 +59,7 @@ void Simulation::compute_forces(bool update_history) {
           if (touch[e]) {  // just separated: forget the pair (reads 1 byte, not the history)
             touch[e] = 0;
             hist[e] = ContactHistory{};
+            share[rev_pos[e]] = Impl::PartnerShare{};
           }
           continue;
         }
@@ -66,6 +67,7 @@ void Simulation::compute_forces(bool update_history) {
         const double delta = rsum - dist;
         if (!(delta <= limit * std::min(ri, R[j])) && tally.blowup_index < 0) {
           tally.blowup_index = i;
+          tally.blowup_x = xi;
           tally.blowup_overlap = delta;
           tally.blowup_partner = "particle id " + std::to_string(ID[j]);
         }
@@ -89,11 +91,11 @@ void Simulation::compute_forces(bool update_history) {
         if (i_first) {
           F += res.force;
           T += res.torque_i;
-          share[e] = {-res.force, res.torque_j};
+          share[rev_pos[e]] = {-res.force, res.torque_j};
         } else {
           F -= res.force;
           T += res.torque_j;
-          share[e] = {res.force, res.torque_i};
+          share[rev_pos[e]] = {res.force, res.torque_i};
         }
         touch[e] = 1;
         ++tally.pair_contacts;
@@ -118,6 +120,7 @@ void Simulation::compute_forces(bool update_history) {
         const double delta = ri - dist;
         if (!(delta <= limit * ri) && tally.blowup_index < 0) {
           tally.blowup_index = i;
+          tally.blowup_x = xi;
           tally.blowup_overlap = delta;
           tally.blowup_partner = "wall " + std::to_string(wi);
         }
@@ -141,30 +144,48 @@ void Simulation::compute_forces(bool update_history) {
       t_[i] = T;
     }
   }
-  // Pass 2: gather the parked partner shares in the fixed reverse-index order.
+  // Pass 2: gather the parked partner shares in the fixed reverse-index order, then (see
+  // AfterForces) the second half kick and the next step's first half of the same particle.
   const std::uint32_t* rev_start = im.list.rev_start.data();
-  const std::uint32_t* rev_entry = im.list.rev_entry.data();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
+  const bool kick = after != AfterForces::nothing;
+  const bool next = after == AfterForces::second_and_next_first_half;
+  FirstHalfStep first;
+  if (next) first = begin_first_half();
+  const double half = 0.5 * dt;
+  const Vec3* XB = im.x_build.data();
+  double max_d2 = 0.0;
+#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles) reduction(max : max_d2)
   for (long b = 0; b < nblocks; ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
     const long j_end = std::min(n, (b + 1) * kBlock);
+    // The gather of the whole block first (one sequential read of the parked shares), then
+    // the block's kicks and drifts on data now in cache. Entries not in contact hold zeros:
+    // adding +0.0 leaves every sum bit for bit as skipping it did, because a sum that
+    // starts at +0.0 (F, T and f_, t_ of pass 1) can never be -0.0 in round-to-nearest.
     for (long j = b * kBlock; j < j_end; ++j) {
       if (MOT[j] != Motion::free) continue;
       Vec3 F = f_[j], T = t_[j];
       for (std::uint32_t k = rev_start[j]; k < rev_start[j + 1]; ++k) {
-        const std::uint32_t e = rev_entry[k];
-        if (touch[e]) {
-          F += share[e].force;
-          T += share[e].torque;
-        }
+        F += share[k].force;
+        T += share[k].torque;
       }
       f_[j] = F;
       t_[j] = T;
       if ((!is_finite(F) || !is_finite(T) || !is_finite(X[j])) && tally.blowup_index < 0) {
         tally.blowup_index = j;
+        tally.blowup_x = X[j];
         tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
       }
     }
+    if (kick)  // integrate_second_half, as a sweep of its own would do it
+      for (long j = b * kBlock; j < j_end; ++j) {
+        if (MOT[j] != Motion::free) continue;
+        v_[j] += (half * inv_m_[j]) * f_[j];
+        w_[j] += (half * inv_inertia_[j]) * t_[j];
+      }
+    if (next)
+      for (long j = b * kBlock; j < j_end; ++j)
+        max_d2 = std::max(max_d2, first.advance(MOT[j], inv_m_[j], inv_inertia_[j], f_[j], t_[j], XB[j], x_[j], v_[j], w_[j]));
   }
   // Fixed-order reduction over blocks.
   for (auto& f : wall_force_) f = {};
@@ -172,11 +193,13 @@ void Simulation::compute_forces(bool update_history) {
   for (long b = 0; b < nblocks; ++b) {
     const BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
     if (tally.blowup_index >= 0)
-      report_blow_up(static_cast<std::size_t>(tally.blowup_index), tally.blowup_overlap, tally.blowup_partner);
+      report_blow_up(static_cast<std::size_t>(tally.blowup_index), tally.blowup_x, tally.blowup_overlap,
+                     tally.blowup_partner);
     for (std::size_t w = 0; w < nw; ++w) wall_force_[w] += tally.wall_force[w];
     im.pair_contacts += tally.pair_contacts;
     im.wall_contacts += tally.wall_contacts;
   }
+  return max_d2;
 }
 
 }  // namespace centrec::dem

@@ -20,6 +20,7 @@ struct BlockTally {
   std::vector<Vec3> wall_force;  // one per wall
   std::size_t pair_contacts = 0, wall_contacts = 0;
   long blowup_index = -1;  // first offending particle of the block
+  Vec3 blowup_x;           // its position then
   double blowup_overlap = 0.0;
   std::string blowup_partner;
 };
@@ -44,7 +45,9 @@ struct Simulation::Impl {
   struct PartnerShare {
     Vec3 force, torque;
   };
-  std::vector<PartnerShare> share;  // the partner's share of force and torque
+  // The partner's share of force and torque, at the entry's reverse position (list.rev_pos)
+  // so pass 2 reads it sequentially; zero while the entry is not in contact.
+  std::vector<PartnerShare> share;
   std::size_t rebuilds = 0, pair_contacts = 0, wall_contacts = 0;
 };
 
