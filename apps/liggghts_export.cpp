@@ -91,21 +91,33 @@ std::string data_file(const dem::scene::CentrecScene& scene, const Box& box, Lig
   return d.str();
 }
 
-// Drum STL: the cylinder wall, the back plate and the outlet lip, one rotating mesh.
-std::string drum_stl(const SceneConfig& c, double d) {
+// Drum cylinder STL: facets within 1 % of a diameter of the true cylinder, about 10 times
+// longer than wide (LIGGGHTS' mesh neighbour lists cost per triangle, and it refuses much
+// longer ones). Sets the plan's facet counts and the curvature that lets contact history
+// cross from one facet column to the next.
+std::string drum_stl(const SceneConfig& c, double d, LiggghtsDeckPlan& plan) {
   const double R = 0.5 * c.drum.diameter;
   const double L = c.slice.enabled ? c.slice.length : c.drum.length;
-  // Facets within 1 % of a diameter of the true cylinder, about 10 times longer than wide:
-  // LIGGGHTS' mesh neighbour lists cost per triangle, and it refuses much longer ones.
-  const int around = facets_around(R, 0.01 * d);
-  const int axial = std::max(1, static_cast<int>(std::ceil(L / (10.0 * 2.0 * M_PI * R / around))));
+  plan.drum_facets_around = facets_around(R, 0.01 * d);
+  plan.drum_facets_axial =
+      std::max(1, static_cast<int>(std::ceil(L / (10.0 * 2.0 * M_PI * R / plan.drum_facets_around))));
+  plan.drum_curvature_deg = cylinder_curvature_deg(R, L, plan.drum_facets_around, plan.drum_facets_axial);
   std::ostringstream s;
   s << "solid drum\n";
-  write_cylinder_facets(s, R, 0.0, L, around, axial);
-  if (!c.slice.enabled && c.drum.back_plate) write_annulus_facets(s, 0.0, 0.0, R, around, true);
-  if (!c.slice.enabled && c.drum.lip_height > 0.0)
-    write_annulus_facets(s, c.drum.length, R - c.drum.lip_height, R, around, false);
+  write_cylinder_facets(s, R, 0.0, L, plan.drum_facets_around, plan.drum_facets_axial);
   s << "endsolid drum\n";
+  return s.str();
+}
+
+// The drum's flat ends, a mesh of their own (their fan triangles are as thin as a facet
+// column is wide, so they cannot take the cylinder's curvature): back plate, outlet lip.
+std::string drum_ends_stl(const SceneConfig& c, int around) {
+  const double R = 0.5 * c.drum.diameter;
+  std::ostringstream s;
+  s << "solid drum_ends\n";
+  if (c.drum.back_plate) write_annulus_facets(s, 0.0, 0.0, R, around, true);
+  if (c.drum.lip_height > 0.0) write_annulus_facets(s, c.drum.length, R - c.drum.lip_height, R, around, false);
+  s << "endsolid drum_ends\n";
   return s.str();
 }
 
@@ -264,15 +276,23 @@ std::string deck(const CaseFile& cf, const DemCase& dc, const LiggghtsDeckPlan& 
     s << "group film type 1\n";
   }
 
-  s << "\n# --- The drum: one still, axisymmetric mesh (cylinder" << (!slice && c.drum.back_plate ? ", back plate" : "")
+  s << "\n# --- The drum: still, axisymmetric meshes (cylinder" << (!slice && c.drum.back_plate ? ", back plate" : "")
     << (!slice && c.drum.lip_height > 0.0 ? ", outlet lip" : "")
     << ") written from the analytic\n"
-       "# geometry, its surface moving as if rotating (surface_ang_vel). A surface of revolution\n"
+       "# geometry, their surface moving as if rotating (surface_ang_vel). A surface of revolution\n"
        "# spinning about its own axis occupies the same space at every instant, so moving the mesh\n"
        "# (move/mesh) would only re-bin its triangles every step for the same contacts.\n"
-    << fmt("fix drum all mesh/surface file %s type 2 surface_ang_vel origin 0 0 0 axis 0 0 1 omega %.17g\n",
-           plan.drum_stl.c_str(), W)
-    << "fix walls film wall/gran " << liggghts_wall_model() << " mesh n_meshes 1 meshes drum\n";
+    << fmt("# The cylinder's %d facet columns turn by %.4g deg each: `curvature %.4g` (default 0.256 deg)\n"
+           "# makes LIGGGHTS carry a contact's tangential and rolling history from one column to the\n"
+           "# next, as on the true cylinder, instead of restarting it at every column.\n",
+           plan.drum_facets_around, 360.0 / plan.drum_facets_around, plan.drum_curvature_deg)
+    << fmt("fix drum all mesh/surface file %s type 2 curvature %.6g surface_ang_vel origin 0 0 0 axis 0 0 1 omega %.17g\n",
+           plan.drum_stl.c_str(), plan.drum_curvature_deg, W);
+  if (plan.has_ends)
+    s << fmt("fix drum_ends all mesh/surface file %s type 2 surface_ang_vel origin 0 0 0 axis 0 0 1 omega %.17g\n",
+             plan.ends_stl.c_str(), W);
+  s << "fix walls film wall/gran " << liggghts_wall_model()
+    << (plan.has_ends ? " mesh n_meshes 2 meshes drum drum_ends\n" : " mesh n_meshes 1 meshes drum\n");
   if (plan.glued > 0) {
     // fix move rotates right-handed about its axis with a positive period.
     s << "# Rough wall: the glued spheres rotate rigidly with the drum (prescribed motion).\n"
@@ -356,7 +376,9 @@ LiggghtsDeckPlan export_liggghts(const CaseFile& cf, const DemCase& dc, const st
   const double dmax = dem::scene::SizeSampler(c.particle, 0).max_diameter();
   const Box box = domain(c, dmax);
   write_text_atomically(dir + "/" + plan.data, data_file(scene, box, plan));
-  write_text_atomically(dir + "/" + plan.drum_stl, drum_stl(c, c.particle.diameter));
+  write_text_atomically(dir + "/" + plan.drum_stl, drum_stl(c, c.particle.diameter, plan));
+  plan.has_ends = !c.slice.enabled && (c.drum.back_plate || c.drum.lip_height > 0.0);
+  if (plan.has_ends) write_text_atomically(dir + "/" + plan.ends_stl, drum_ends_stl(c, plan.drum_facets_around));
   if (c.feeder.enabled && !c.slice.enabled)
     write_text_atomically(dir + "/" + plan.outlet_stl, outlet_stl(c, c.particle.diameter));
   ensure_directory(dir + "/" + plan.dump_dir);

@@ -25,7 +25,11 @@ struct LiggghtsDeckPlan {
   int snapshots_per_turn = 0;
   std::int64_t glued = 0, initial_free = 0;
   double initial_holdup = 0.0;     // kg of free particles in the data file
-  std::string deck = "in.centrec", data = "data.centrec", drum_stl = "drum.stl", outlet_stl = "outlet.stl";
+  std::string deck = "in.centrec", data = "data.centrec", drum_stl = "drum.stl", ends_stl = "drum_ends.stl",
+              outlet_stl = "outlet.stl";
+  int drum_facets_around = 0, drum_facets_axial = 0;
+  double drum_curvature_deg = 0.0;  // fix mesh/surface curvature of the cylinder (liggghts_stl)
+  bool has_ends = false;            // back plate and/or outlet lip present (drum_ends.stl)
   std::string dump_dir = "dumps", dump_pattern = "dumps/film_*.dump", flow_file = "mass_flow.txt";
   std::string log = "log.liggghts", screen = "screen.liggghts";
 };

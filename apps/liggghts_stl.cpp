@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "atomic_write.hpp"
 
@@ -67,6 +69,21 @@ long write_annulus_facets(std::ostream& out, double z, double r_in, double r_out
     }
   }
   return n;
+}
+
+double cylinder_curvature_deg(double radius, double length, int around, int axial) {
+  const double turn = 360.0 / around;
+  const double width = 2.0 * radius * std::sin(M_PI / around), height = length / axial;
+  const double smallest = std::atan(std::min(width, height) / std::max(width, height)) * 180.0 / M_PI;
+  if (!(turn < smallest)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg,
+                  "cylinder mesh: facet columns turn by %.3g deg but a triangle's smallest angle is %.3g deg; "
+                  "LIGGGHTS cannot carry contact history across them (shorter facets needed)",
+                  turn, smallest);
+    throw std::invalid_argument(msg);
+  }
+  return 0.5 * (turn + smallest);
 }
 
 int facets_around(double radius, double sagitta) {

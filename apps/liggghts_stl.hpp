@@ -20,6 +20,16 @@ long write_annulus_facets(std::ostream& out, double z, double r_in, double r_out
 // true surface (at least 24).
 int facets_around(double radius, double sagitta);
 
+// The `curvature` (degrees) to give fix mesh/surface for a cylinder written by
+// write_cylinder_facets: LIGGGHTS copies a contact's history (tangential and rolling
+// springs) to the next triangle only if the two lie within `curvature` of each other, and
+// its default (0.256 deg) is below the turn between neighbouring facet columns (360/around
+// deg), so a particle riding the drum round would lose its wall history at every column
+// and slip as if the wall had no memory. Returns the midpoint between that turn and the
+// smallest angle inside a triangle (LIGGGHTS refuses a curvature above it); throws
+// std::invalid_argument if the facets are too slender to separate the two.
+double cylinder_curvature_deg(double radius, double length, int around, int axial);
+
 // A whole STL file holding one cylinder (the benchmark's drum wall).
 long write_cylinder_stl(const std::string& path, double radius, double length, int around, int axial);
 

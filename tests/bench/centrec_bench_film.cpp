@@ -92,7 +92,9 @@ int main(int argc, char** argv) {
         int axial = static_cast<int>(std::ceil(s.length / (10.0 * facet_width)));
         axial += axial % 2;
         const long tris = centrec::cli::write_cylinder_stl(lig.deck.stl_file, c.drum_radius, s.length, o.stl_facets, axial);
-        std::printf("  LIGGGHTS mesh: %ld triangles (%d around x %d along z)\n", tris, o.stl_facets, axial);
+        lig.deck.curvature_deg = centrec::cli::cylinder_curvature_deg(c.drum_radius, s.length, o.stl_facets, axial);
+        std::printf("  LIGGGHTS mesh: %ld triangles (%d around x %d along z), curvature %.3g deg\n", tris, o.stl_facets,
+                    axial, lig.deck.curvature_deg);
       }
       for (int t : o.threads) {
         BenchRow row;

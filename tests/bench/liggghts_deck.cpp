@@ -73,13 +73,14 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
   std::fputs(cli::liggghts_material_commands(m).c_str(), f);
   std::fprintf(f, "timestep %.9g\n", c.dt);
   // The wall: a still mesh whose surface moves as if rotating (no mesh motion, no
-  // re-binning of triangles each step): LIGGGHTS' cheapest rotating cylinder.
+  // re-binning of triangles each step): LIGGGHTS' cheapest rotating cylinder; its
+  // curvature lets a contact's history cross from one facet column to the next.
   std::fprintf(f,
-               "fix cyl all mesh/surface file %s type 2 surface_ang_vel origin 0 0 0 axis 0 0 1 omega %.17g\n"
+               "fix cyl all mesh/surface file %s type 2 curvature %.6g surface_ang_vel origin 0 0 0 axis 0 0 1 omega %.17g\n"
                "fix wall all wall/gran %s mesh n_meshes 1 meshes cyl\n"
                "fix integ all nve/sphere\n"
                "fix grav all gravity %.17g vector 0 %.17g %.17g\n",
-               k.stl_file.c_str(), W, cli::liggghts_wall_model(), c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
+               k.stl_file.c_str(), k.curvature_deg, W, cli::liggghts_wall_model(), c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
   // Cheap thermo during the timed runs (printed only at run start and end); lost atoms stop the run.
   std::fprintf(f,
                "thermo_style custom step atoms ke\n"

@@ -11,6 +11,7 @@ namespace centrec::bench {
 struct LiggghtsDeckSettings {
   std::string data_file;   // written by write_liggghts_data
   std::string stl_file;    // written by write_cylinder_stl
+  double curvature_deg = 0.256235;  // fix mesh/surface curvature (cli::cylinder_curvature_deg)
   int ranks = 1;           // processor grid 1 x 1 x ranks (split along the drum axis)
   double skin = 0.48e-3;   // neighbour skin, m
   long settle_steps = 2000;

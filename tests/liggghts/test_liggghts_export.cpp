@@ -3,6 +3,7 @@
 // settings LIGGGHTS cannot express.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include "case_file.hpp"
 #include "liggghts_export.hpp"
+#include "liggghts_stl.hpp"
 
 using namespace centrec::cli;
 namespace fs = std::filesystem;
@@ -81,13 +83,23 @@ TEST(LiggghtsExport, WritesDataAndGeometryOfTheScene) {
   EXPECT_EQ(plan.initial_free, 200);
   EXPECT_GT(plan.glued, 0);
   EXPECT_NE(data.find(std::to_string(plan.glued + plan.initial_free) + " atoms"), std::string::npos);
-  // Drum STL: cylinder + back plate (a fan: one triangle per sector) + lip (two per sector).
-  const std::string drum = slurp((dir / plan.drum_stl).string());
+  // Cylinder STL (two triangles per facet) and the ends' STL: back plate (a fan: one
+  // triangle per sector) + lip (two per sector), same sectors as the cylinder's columns.
+  ASSERT_TRUE(plan.has_ends);
+  const std::string cylinder = slurp((dir / plan.drum_stl).string());
+  const std::string ends = slurp((dir / plan.ends_stl).string());
   const std::string outlet = slurp((dir / plan.outlet_stl).string());
   const int sectors = count(outlet, "endfacet");  // the outlet face is a fan: one per sector
-  const int drum_facets = count(drum, "endfacet");
   EXPECT_GE(sectors, 24);
-  EXPECT_EQ((drum_facets - 3 * sectors) % (2 * sectors), 0) << drum_facets << " facets, " << sectors << " sectors";
+  EXPECT_EQ(sectors, plan.drum_facets_around);
+  EXPECT_EQ(count(cylinder, "endfacet"), 2 * plan.drum_facets_around * plan.drum_facets_axial);
+  EXPECT_EQ(count(ends, "endfacet"), 3 * sectors);
+  // History crosses facet columns: curvature above their turn, below the triangles' smallest angle.
+  const double turn = 360.0 / plan.drum_facets_around;
+  std::printf("facet columns turn %.3f deg, curvature %.3f deg\n", turn, plan.drum_curvature_deg);
+  EXPECT_GT(plan.drum_curvature_deg, turn);
+  EXPECT_LT(plan.drum_curvature_deg, 2.0 * turn);
+  const std::string drum = cylinder + ends;
   // Every vertex lies on the analytic geometry: radius R (cylinder, plate rim, lip rim),
   // R - lip (lip inner rim) or the axis (plate centre).
   const double R = 0.015, lip = 0.0012, L = 0.012;
@@ -128,4 +140,16 @@ TEST(LiggghtsExport, RefusesTheRelativeWallRollingModelByName) {
   const auto why = liggghts_inexpressible(dc);
   ASSERT_EQ(why.size(), 2u);
   EXPECT_NE(why[1].find("drum.speed_rpm"), std::string::npos) << why[1];
+}
+
+// The curvature that carries contact history across facet columns exists only while the
+// triangles are less slender than the turn between columns.
+TEST(LiggghtsExport, CylinderCurvatureBetweenColumnTurnAndSmallestAngle) {
+  // 79 columns on R = 15 mm, 1.19 mm wide, 10 times as long: turn 4.56 deg, smallest angle 5.71 deg.
+  const double R = 0.015, width = 2.0 * R * std::sin(M_PI / 79);
+  const double c = cylinder_curvature_deg(R, 10 * width, 79, 1);
+  std::printf("curvature %.4f deg (turn %.4f, smallest angle %.4f)\n", c, 360.0 / 79, std::atan(0.1) * 180 / M_PI);
+  EXPECT_NEAR(c, 0.5 * (360.0 / 79 + std::atan(0.1) * 180 / M_PI), 1e-12);
+  // 40 times as long: smallest angle 1.43 deg < turn 4.56 deg -> refused with the reason.
+  EXPECT_THROW(cylinder_curvature_deg(R, 40 * width, 79, 1), std::invalid_argument);
 }
