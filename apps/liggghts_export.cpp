@@ -91,17 +91,22 @@ std::string data_file(const dem::scene::CentrecScene& scene, const Box& box, Lig
   return d.str();
 }
 
-// Drum cylinder STL: facets within 1 % of a diameter of the true cylinder, about 10 times
-// longer than wide (LIGGGHTS' mesh neighbour lists cost per triangle, and it refuses much
-// longer ones). Sets the plan's facet counts and the curvature that lets contact history
-// cross from one facet column to the next.
-std::string drum_stl(const SceneConfig& c, double d, LiggghtsDeckPlan& plan) {
+// The drum mesh: facet columns within 1 % of a diameter of the true cylinder, facets about
+// 10 times longer than wide, and the curvature that lets contact history cross from one
+// facet column to the next.
+void plan_drum_mesh(const SceneConfig& c, double d, LiggghtsDeckPlan& plan) {
   const double R = 0.5 * c.drum.diameter;
   const double L = c.slice.enabled ? c.slice.length : c.drum.length;
   plan.drum_facets_around = facets_around(R, 0.01 * d);
-  plan.drum_facets_axial =
-      std::max(1, static_cast<int>(std::ceil(L / (10.0 * 2.0 * M_PI * R / plan.drum_facets_around))));
+  plan.drum_facets_axial = facets_along(R, L, plan.drum_facets_around);
   plan.drum_curvature_deg = cylinder_curvature_deg(R, L, plan.drum_facets_around, plan.drum_facets_axial);
+  plan.has_ends = !c.slice.enabled && (c.drum.back_plate || c.drum.lip_height > 0.0);
+}
+
+// Drum cylinder STL.
+std::string drum_stl(const SceneConfig& c, const LiggghtsDeckPlan& plan) {
+  const double R = 0.5 * c.drum.diameter;
+  const double L = c.slice.enabled ? c.slice.length : c.drum.length;
   std::ostringstream s;
   s << "solid drum\n";
   write_cylinder_facets(s, R, 0.0, L, plan.drum_facets_around, plan.drum_facets_axial);
@@ -122,11 +127,11 @@ std::string drum_ends_stl(const SceneConfig& c, int around) {
 }
 
 // The outlet face: the open disc at z = L that counts and deletes leaving particles.
-std::string outlet_stl(const SceneConfig& c, double d) {
+std::string outlet_stl(const SceneConfig& c, int around) {
   const double R = 0.5 * c.drum.diameter, r = R - c.drum.lip_height;
   std::ostringstream s;
   s << "solid outlet\n";
-  write_annulus_facets(s, c.drum.length, 0.0, r, facets_around(R, 0.01 * d), true);
+  write_annulus_facets(s, c.drum.length, 0.0, r, around, true);
   s << "endsolid outlet\n";
   return s.str();
 }
@@ -376,11 +381,11 @@ LiggghtsDeckPlan export_liggghts(const CaseFile& cf, const DemCase& dc, const st
   const double dmax = dem::scene::SizeSampler(c.particle, 0).max_diameter();
   const Box box = domain(c, dmax);
   write_text_atomically(dir + "/" + plan.data, data_file(scene, box, plan));
-  write_text_atomically(dir + "/" + plan.drum_stl, drum_stl(c, c.particle.diameter, plan));
-  plan.has_ends = !c.slice.enabled && (c.drum.back_plate || c.drum.lip_height > 0.0);
+  plan_drum_mesh(c, c.particle.diameter, plan);
+  write_text_atomically(dir + "/" + plan.drum_stl, drum_stl(c, plan));
   if (plan.has_ends) write_text_atomically(dir + "/" + plan.ends_stl, drum_ends_stl(c, plan.drum_facets_around));
   if (c.feeder.enabled && !c.slice.enabled)
-    write_text_atomically(dir + "/" + plan.outlet_stl, outlet_stl(c, c.particle.diameter));
+    write_text_atomically(dir + "/" + plan.outlet_stl, outlet_stl(c, plan.drum_facets_around));
   ensure_directory(dir + "/" + plan.dump_dir);
   write_text_atomically(dir + "/" + plan.deck, deck(cf, dc, plan));
   return plan;

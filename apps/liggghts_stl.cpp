@@ -86,6 +86,10 @@ double cylinder_curvature_deg(double radius, double length, int around, int axia
   return 0.5 * (turn + smallest);
 }
 
+int facets_along(double radius, double length, int around) {
+  return std::max(1, static_cast<int>(std::ceil(length / (10.0 * 2.0 * M_PI * radius / around))));
+}
+
 int facets_around(double radius, double sagitta) {
   const double c = 1.0 - std::min(0.5, sagitta / radius);
   return std::max(24, static_cast<int>(std::ceil(M_PI / std::acos(c))));

@@ -20,6 +20,10 @@ long write_annulus_facets(std::ostream& out, double z, double r_in, double r_out
 // true surface (at least 24).
 int facets_around(double radius, double sagitta);
 
+// Axial segments for a cylinder of `around` facet columns so its facets are about 10 times
+// longer than wide (as fast as full-length ones in LIGGGHTS, which refuses much longer ones).
+int facets_along(double radius, double length, int around);
+
 // The `curvature` (degrees) to give fix mesh/surface for a cylinder written by
 // write_cylinder_facets: LIGGGHTS copies a contact's history (tangential and rolling
 // springs) to the next triangle only if the two lie within `curvature` of each other, and

@@ -18,6 +18,12 @@ namespace centrec::dem {
 // Rotates u about the unit axis k by the angle whose cosine and sine are given (Rodrigues).
 inline Vec3 rotate(Vec3 u, Vec3 k, double c, double s) { return c * u + s * cross(k, u) + ((1.0 - c) * dot(k, u)) * k; }
 
+// Half kick of a free particle: v += dt/2 F/m, w += dt/2 T/I (either half of the step).
+inline void half_kick(double half, double inv_m, double inv_inertia, Vec3 f, Vec3 t, Vec3& v, Vec3& w) {
+  v += (half * inv_m) * f;
+  w += (half * inv_inertia) * t;
+}
+
 struct FirstHalfStep {
   double dt = 0.0, half = 0.0;  // s
   DrumMotion drum;
@@ -31,8 +37,7 @@ struct FirstHalfStep {
   double advance(Motion motion, double inv_m, double inv_inertia, Vec3 f, Vec3 t, Vec3 x_build, Vec3& x, Vec3& v,
                  Vec3& w) const {
     if (motion == Motion::free) {
-      v += (half * inv_m) * f;
-      w += (half * inv_inertia) * t;
+      half_kick(half, inv_m, inv_inertia, f, t, v, w);
       x += dt * v;
     } else {  // rigidly with the drum: exact rotation of the position
       const Vec3 rel = rotate(x - drum.origin, drum.axis, c, s);

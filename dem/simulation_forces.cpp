@@ -179,9 +179,7 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
     }
     if (kick)  // integrate_second_half, as a sweep of its own would do it
       for (long j = b * kBlock; j < j_end; ++j) {
-        if (MOT[j] != Motion::free) continue;
-        v_[j] += (half * inv_m_[j]) * f_[j];
-        w_[j] += (half * inv_inertia_[j]) * t_[j];
+        if (MOT[j] == Motion::free) half_kick(half, inv_m_[j], inv_inertia_[j], f_[j], t_[j], v_[j], w_[j]);
       }
     if (next)
       for (long j = b * kBlock; j < j_end; ++j)

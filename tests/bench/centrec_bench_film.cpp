@@ -88,8 +88,7 @@ int main(int argc, char** argv) {
         // Facets about 10 times longer than wide: LIGGGHTS was as fast with these as with
         // full-length ones, and refuses triangles whose smallest angle is below its
         // curvature limit (about 0.26 deg). An even count puts a facet edge on the 2-rank split.
-        const double facet_width = 2.0 * M_PI * c.drum_radius / o.stl_facets;
-        int axial = static_cast<int>(std::ceil(s.length / (10.0 * facet_width)));
+        int axial = centrec::cli::facets_along(c.drum_radius, s.length, o.stl_facets);
         axial += axial % 2;
         const long tris = centrec::cli::write_cylinder_stl(lig.deck.stl_file, c.drum_radius, s.length, o.stl_facets, axial);
         lig.deck.curvature_deg = centrec::cli::cylinder_curvature_deg(c.drum_radius, s.length, o.stl_facets, axial);
