@@ -312,11 +312,6 @@ void Simulation::rebuild() {
   im.touch.resize(im.list.nbr.size());
   for (std::size_t e = 0; e < im.touch.size(); ++e) im.touch[e] = !is_zero(im.list.hist[e]);
   im.share.assign(im.list.nbr.size(), Impl::PartnerShare{});
-  const long rows = static_cast<long>(im.list.rows());
-  im.first_naming_row.assign(static_cast<std::size_t>((rows + kBlock - 1) / kBlock), rows);
-  for (long i = rows - 1; i >= 0; --i)  // downwards: the last row written is the lowest
-    for (std::uint32_t e = im.list.start[i]; e < im.list.start[i + 1]; ++e)
-      im.first_naming_row[static_cast<std::size_t>(im.list.nbr[e] / kBlock)] = i;
   im.carried = NeighbourList{};
 
   const std::size_t n = x_.size();
@@ -434,7 +429,7 @@ std::size_t Simulation::memory_bytes() const {
                   bytes_of(r_) + bytes_of(m_) + bytes_of(inv_m_) + bytes_of(inv_inertia_) + bytes_of(mat_) +
                   bytes_of(motion_);
   b += im.list.bytes() + im.carried.bytes() + bytes_of(im.x_build) + bytes_of(im.wall_hist) + bytes_of(im.wall_mask) +
-       bytes_of(im.touch) + bytes_of(im.share) + bytes_of(im.first_naming_row) + bytes_of(im.deferred) +
+       bytes_of(im.touch) + bytes_of(im.share) +
        bytes_of(im.grid.cell_start);
   for (const auto& t : im.tallies) b += sizeof(BlockTally) + bytes_of(t.wall_force);
   return b;

@@ -1,46 +1,15 @@
 // The force pass of Simulation (DESIGN.md section 3): Hertz-Mindlin-EPSD2 for every
 // pair of the half neighbour list and every candidate wall, gathered deterministically.
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
-
-#include <omp.h>
 
 #include "dem/contact_law.hpp"
 #include "dem/first_half_step.hpp"
 #include "dem/simulation_impl.hpp"
 
 namespace centrec::dem {
-
-namespace {
-
-// Rows ahead whose partners are prefetched (2-8 measured alike, 4 best: +12 % particle-steps/s
-// at 2e5 particles, none at 1e4).
-constexpr long kPrefetchRows = 4;
-
-// Asks for the cache lines row i will read: its partners' positions, velocities, spins, ids
-// and radii, and its histories. Beyond the last-level cache the partners of a row lie in
-// nine cell rows of three z-layers, too many streams for the hardware prefetcher; without
-// this the pair pass waits on memory (the history load alone was 10 % of its samples at
-// 2e5 particles, 5 % at 1e4).
-inline void prefetch_row(long i, const std::uint32_t* start, const std::int32_t* nbr, const ContactHistory* hist,
-                         const Vec3* X, const Vec3* V, const Vec3* W, const double* R, const std::int64_t* ID) {
-  const std::uint32_t e0 = start[i], e1 = start[i + 1];
-  for (std::uint32_t e = e0; e < e1; ++e) {
-    const std::int32_t j = nbr[e];
-    __builtin_prefetch(&X[j]);
-    __builtin_prefetch(&V[j]);
-    __builtin_prefetch(&W[j]);
-    __builtin_prefetch(&ID[j]);
-    __builtin_prefetch(&R[j]);
-  }
-  const char* end = reinterpret_cast<const char*>(hist + e1);
-  for (const char* p = reinterpret_cast<const char*>(hist + e0); p < end; p += 64) __builtin_prefetch(p);
-}
-
-}  // namespace
 
 double Simulation::compute_forces(bool update_history, AfterForces after) {
   Impl& im = *impl_;
@@ -66,6 +35,117 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   const int* MAT = mat_.data();
   const Motion* MOT = motion_.data();
 
+  // Pass 1: each pair once, in the row of its lower index. The row owner's share is summed
+  // at once; the partner's share is parked for pass 2 at the entry's reverse position.
+#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
+  for (long b = 0; b < nblocks; ++b) {
+    BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+    tally.wall_force.assign(nw, Vec3{});
+    tally.pair_contacts = tally.wall_contacts = 0;
+    tally.blowup_index = -1;
+    const long i_end = std::min(n, (b + 1) * kBlock);
+    for (long i = b * kBlock; i < i_end; ++i) {
+      const Vec3 xi = X[i];
+      const double ri = R[i];
+      const std::int64_t idi = ID[i];
+      Vec3 F{}, T{};
+      for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
+        const std::int32_t j = nbr[e];
+        Vec3 d = xi - X[j];
+        d.z = pz.image(d.z);
+        const double rsum = ri + R[j];
+        const double dist2 = norm2(d);
+        if (dist2 >= rsum * rsum) {
+          if (touch[e]) {  // just separated: forget the pair (reads 1 byte, not the history)
+            touch[e] = 0;
+            hist[e] = ContactHistory{};
+            share[rev_pos[e]] = Impl::PartnerShare{};
+          }
+          continue;
+        }
+        const double dist = std::sqrt(dist2);
+        const double delta = rsum - dist;
+        if (!(delta <= limit * std::min(ri, R[j])) && tally.blowup_index < 0) {
+          tally.blowup_index = i;
+          tally.blowup_x = xi;
+          tally.blowup_overlap = delta;
+          tally.blowup_partner = "particle id " + std::to_string(ID[j]);
+        }
+        // Canonical operand order (lower id first): the result and the stored history do
+        // not depend on which of the two is the row owner after a re-sort.
+        const bool i_first = idi < ID[j];
+        const long a = i_first ? i : j, c = i_first ? j : i;
+        const double ra = R[a], rc = R[c], ma = M[a], mc = M[c];
+        const Vec3 nrm = (1.0 / dist) * (i_first ? d : -d);
+        const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
+        const ContactInput in{delta,
+                              nrm,
+                              contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, nrm),
+                              Wv[a] - Wv[c],
+                              ra * rc / (ra + rc),
+                              ma * mc / (ma + mc),
+                              arm_a,
+                              arm_c};
+        const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
+        if (update_history) hist[e] = res.history;
+        if (i_first) {
+          F += res.force;
+          T += res.torque_i;
+          share[rev_pos[e]] = {-res.force, res.torque_j};
+        } else {
+          F -= res.force;
+          T += res.torque_j;
+          share[rev_pos[e]] = {res.force, res.torque_i};
+        }
+        touch[e] = 1;
+        ++tally.pair_contacts;
+      }
+      if (MOT[i] != Motion::free) {  // carried by the drum: forces on it are not needed
+        f_[i] = {};
+        t_[i] = {};
+        continue;
+      }
+      std::uint32_t mask = im.wall_mask[i];
+      while (mask != 0u) {
+        const int wi = __builtin_ctz(mask);
+        mask &= mask - 1u;
+        const Wall& wall = walls_[static_cast<std::size_t>(wi)];
+        ContactHistory& h = whist[static_cast<std::size_t>(i) * nw + static_cast<std::size_t>(wi)];
+        double dist;
+        Vec3 nrm, point;
+        if (!wall_geometry(wall, xi, dist, nrm, point) || dist >= ri) {
+          h = ContactHistory{};
+          continue;
+        }
+        const double delta = ri - dist;
+        if (!(delta <= limit * ri) && tally.blowup_index < 0) {
+          tally.blowup_index = i;
+          tally.blowup_x = xi;
+          tally.blowup_overlap = delta;
+          tally.blowup_partner = "wall " + std::to_string(wi);
+        }
+        const double arm = ri - 0.5 * delta;
+        const ContactInput in{delta,
+                              nrm,
+                              contact_velocity(V[i] - wall_velocity_at(wall, point), Wv[i], Vec3{}, arm, 0.0, nrm),
+                              relative_rolling ? Wv[i] - wall.angular_velocity : Wv[i],
+                              ri,
+                              M[i],
+                              arm,
+                              0.0};
+        const ContactResult res = evaluate_contact(pair(MAT[i], wall.material), in, h, dt);
+        if (update_history) h = res.history;
+        F += res.force;
+        T += res.torque_i;
+        tally.wall_force[static_cast<std::size_t>(wi)] -= res.force;
+        ++tally.wall_contacts;
+      }
+      f_[i] = F + M[i] * g;
+      t_[i] = T;
+    }
+  }
+  // Pass 2: gather the parked partner shares in the fixed reverse-index order, then (see
+  // AfterForces) the second half kick and the next step's first half of the same particle.
   const std::uint32_t* rev_start = im.list.rev_start.data();
   const bool kick = after != AfterForces::nothing;
   const bool next = after == AfterForces::second_and_next_first_half;
@@ -73,175 +153,37 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   if (next) first = begin_first_half();
   const double half = 0.5 * dt;
   const Vec3* XB = im.x_build.data();
-  const long* first_row = im.first_naming_row.data();
-  im.deferred.assign(static_cast<std::size_t>(nblocks), 0);
-  std::uint8_t* deferred = im.deferred.data();
-  std::atomic<long> next_deferred{0};
   double max_d2 = 0.0;
-  const int nthreads = n >= kMinParallelParticles ? threads_ : 1;
-  // Both passes in one sweep: rows name only partners of higher index, so once the rows up
-  // to the end of block b are done, the particles of block b have all their shares and no
-  // later row reads their position or velocity; they can be gathered, kicked and drifted
-  // at once, while their data and shares are still in cache (one trip through memory per
-  // step instead of two). A thread's blocks that rows of an earlier thread name
-  // (first_naming_row, from the rebuild) are deferred to phase 1, after the barrier, where
-  // all threads share them. Every particle still sums the same shares in the same order:
-  // results do not depend on the thread count.
-#pragma omp parallel num_threads(nthreads) reduction(max : max_d2)
-  {
-    const long nt = omp_get_num_threads(), t = omp_get_thread_num();
-    const long b0 = nblocks * t / nt, b1 = nblocks * (t + 1) / nt;
-    for (int phase = 0; phase < 2; ++phase) {
-      if (phase == 1) {
-#pragma omp barrier
+#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles) reduction(max : max_d2)
+  for (long b = 0; b < nblocks; ++b) {
+    BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+    const long j_end = std::min(n, (b + 1) * kBlock);
+    // The gather of the whole block first (one sequential read of the parked shares), then
+    // the block's kicks and drifts on data now in cache. Entries not in contact hold zeros:
+    // adding +0.0 leaves every sum bit for bit as skipping it did, because a sum that
+    // starts at +0.0 (F, T and f_, t_ of pass 1) can never be -0.0 in round-to-nearest.
+    for (long j = b * kBlock; j < j_end; ++j) {
+      if (MOT[j] != Motion::free) continue;
+      Vec3 F = f_[j], T = t_[j];
+      for (std::uint32_t k = rev_start[j]; k < rev_start[j + 1]; ++k) {
+        F += share[k].force;
+        T += share[k].torque;
       }
-      for (long b = phase == 0 ? b0 : next_deferred++; b < (phase == 0 ? b1 : nblocks);
-           b = phase == 0 ? b + 1 : next_deferred++) {
-        if (phase == 0) {
-          // Pass 1 of block b: each pair once, in the row of its lower index. The row owner's
-          // share is summed at once; the partner's share is parked for pass 2 at the entry's
-          // reverse position.
-          BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
-          tally.wall_force.assign(nw, Vec3{});
-          tally.pair_contacts = tally.wall_contacts = 0;
-          tally.blowup_index = -1;
-          const long i_end = std::min(n, (b + 1) * kBlock);
-          for (long i = b * kBlock; i < i_end; ++i) {
-            if (i + kPrefetchRows < n) prefetch_row(i + kPrefetchRows, start, nbr, hist, X, V, Wv, R, ID);
-            const Vec3 xi = X[i];
-            const double ri = R[i];
-            const std::int64_t idi = ID[i];
-            Vec3 F{}, T{};
-            for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
-              const std::int32_t j = nbr[e];
-              Vec3 d = xi - X[j];
-              d.z = pz.image(d.z);
-              const double rsum = ri + R[j];
-              const double dist2 = norm2(d);
-              if (dist2 >= rsum * rsum) {
-                if (touch[e]) {  // just separated: forget the pair (reads 1 byte, not the history)
-                  touch[e] = 0;
-                  hist[e] = ContactHistory{};
-                  share[rev_pos[e]] = Impl::PartnerShare{};
-                }
-                continue;
-              }
-              const double dist = std::sqrt(dist2);
-              const double delta = rsum - dist;
-              if (!(delta <= limit * std::min(ri, R[j])) && tally.blowup_index < 0) {
-                tally.blowup_index = i;
-                tally.blowup_x = xi;
-                tally.blowup_overlap = delta;
-                tally.blowup_partner = "particle id " + std::to_string(ID[j]);
-              }
-              // Canonical operand order (lower id first): the result and the stored history do
-              // not depend on which of the two is the row owner after a re-sort.
-              const bool i_first = idi < ID[j];
-              const long a = i_first ? i : j, c = i_first ? j : i;
-              const double ra = R[a], rc = R[c], ma = M[a], mc = M[c];
-              const Vec3 nrm = (1.0 / dist) * (i_first ? d : -d);
-              const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
-              const ContactInput in{delta,
-                                    nrm,
-                                    contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, nrm),
-                                    Wv[a] - Wv[c],
-                                    ra * rc / (ra + rc),
-                                    ma * mc / (ma + mc),
-                                    arm_a,
-                                    arm_c};
-              const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
-              if (update_history) hist[e] = res.history;
-              if (i_first) {
-                F += res.force;
-                T += res.torque_i;
-                share[rev_pos[e]] = {-res.force, res.torque_j};
-              } else {
-                F -= res.force;
-                T += res.torque_j;
-                share[rev_pos[e]] = {res.force, res.torque_i};
-              }
-              touch[e] = 1;
-              ++tally.pair_contacts;
-            }
-            if (MOT[i] != Motion::free) {  // carried by the drum: forces on it are not needed
-              f_[i] = {};
-              t_[i] = {};
-              continue;
-            }
-            std::uint32_t mask = im.wall_mask[i];
-            while (mask != 0u) {
-              const int wi = __builtin_ctz(mask);
-              mask &= mask - 1u;
-              const Wall& wall = walls_[static_cast<std::size_t>(wi)];
-              ContactHistory& h = whist[static_cast<std::size_t>(i) * nw + static_cast<std::size_t>(wi)];
-              double dist;
-              Vec3 nrm, point;
-              if (!wall_geometry(wall, xi, dist, nrm, point) || dist >= ri) {
-                h = ContactHistory{};
-                continue;
-              }
-              const double delta = ri - dist;
-              if (!(delta <= limit * ri) && tally.blowup_index < 0) {
-                tally.blowup_index = i;
-                tally.blowup_x = xi;
-                tally.blowup_overlap = delta;
-                tally.blowup_partner = "wall " + std::to_string(wi);
-              }
-              const double arm = ri - 0.5 * delta;
-              const ContactInput in{delta,
-                                    nrm,
-                                    contact_velocity(V[i] - wall_velocity_at(wall, point), Wv[i], Vec3{}, arm, 0.0, nrm),
-                                    relative_rolling ? Wv[i] - wall.angular_velocity : Wv[i],
-                                    ri,
-                                    M[i],
-                                    arm,
-                                    0.0};
-              const ContactResult res = evaluate_contact(pair(MAT[i], wall.material), in, h, dt);
-              if (update_history) h = res.history;
-              F += res.force;
-              T += res.torque_i;
-              tally.wall_force[static_cast<std::size_t>(wi)] -= res.force;
-              ++tally.wall_contacts;
-            }
-            f_[i] = F + M[i] * g;
-            t_[i] = T;
-          }
-        }
-        if (phase == 0 && first_row[b] < b0 * kBlock) deferred[b] = 1;
-        if (deferred[b] != phase) continue;
-        // Pass 2 of block b: gather the parked partner shares in the fixed reverse-index
-        // order, then (see AfterForces) the second half kick and the next step's first half
-        // of the same particle.
-        BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
-        const long j_end = std::min(n, (b + 1) * kBlock);
-        // The gather of the whole block first (one sequential read of the parked shares), then
-        // the block's kicks and drifts on data now in cache. Entries not in contact hold zeros:
-        // adding +0.0 leaves every sum bit for bit as skipping it did, because a sum that
-        // starts at +0.0 (F, T and f_, t_ of pass 1) can never be -0.0 in round-to-nearest.
-        for (long j = b * kBlock; j < j_end; ++j) {
-          if (MOT[j] != Motion::free) continue;
-          Vec3 F = f_[j], T = t_[j];
-          for (std::uint32_t k = rev_start[j]; k < rev_start[j + 1]; ++k) {
-            F += share[k].force;
-            T += share[k].torque;
-          }
-          f_[j] = F;
-          t_[j] = T;
-          if ((!is_finite(F) || !is_finite(T) || !is_finite(X[j])) && tally.blowup_index < 0) {
-            tally.blowup_index = j;
-            tally.blowup_x = X[j];
-            tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
-          }
-        }
-        if (kick)  // integrate_second_half, as a sweep of its own would do it
-          for (long j = b * kBlock; j < j_end; ++j) {
-            if (MOT[j] == Motion::free) half_kick(half, inv_m_[j], inv_inertia_[j], f_[j], t_[j], v_[j], w_[j]);
-          }
-        if (next)
-          for (long j = b * kBlock; j < j_end; ++j)
-            max_d2 = std::max(max_d2, first.advance(MOT[j], inv_m_[j], inv_inertia_[j], f_[j], t_[j], XB[j], x_[j], v_[j], w_[j]));
+      f_[j] = F;
+      t_[j] = T;
+      if ((!is_finite(F) || !is_finite(T) || !is_finite(X[j])) && tally.blowup_index < 0) {
+        tally.blowup_index = j;
+        tally.blowup_x = X[j];
+        tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
       }
     }
+    if (kick)  // integrate_second_half, as a sweep of its own would do it
+      for (long j = b * kBlock; j < j_end; ++j) {
+        if (MOT[j] == Motion::free) half_kick(half, inv_m_[j], inv_inertia_[j], f_[j], t_[j], v_[j], w_[j]);
+      }
+    if (next)
+      for (long j = b * kBlock; j < j_end; ++j)
+        max_d2 = std::max(max_d2, first.advance(MOT[j], inv_m_[j], inv_inertia_[j], f_[j], t_[j], XB[j], x_[j], v_[j], w_[j]));
   }
   // Fixed-order reduction over blocks.
   for (auto& f : wall_force_) f = {};

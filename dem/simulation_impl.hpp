@@ -48,11 +48,6 @@ struct Simulation::Impl {
   // The partner's share of force and torque, at the entry's reverse position (list.rev_pos)
   // so pass 2 reads it sequentially; zero while the entry is not in contact.
   std::vector<PartnerShare> share;
-  // Per block of kBlock particles: the lowest row whose list names one of its particles
-  // (rows() if none), set at each rebuild; the fused force sweep gathers a block as soon
-  // as the rows that name it are done.
-  std::vector<long> first_naming_row;
-  std::vector<std::uint8_t> deferred;  // per block, this force pass: gathered after the barrier
   std::size_t rebuilds = 0, pair_contacts = 0, wall_contacts = 0;
 };
 
