@@ -8,10 +8,11 @@
 #include "atomic_write.hpp"
 #include "case_file.hpp"
 #include "checkpoint_h5.hpp"
+#include "code_version.hpp"
 #include "commands.hpp"
-#include "dem_case_run.hpp"
 #include "dem/scene/centrec_scene.hpp"
 #include "dem/scene/scene_sampler.hpp"
+#include "dem_case_run.hpp"
 #include "dem_engine_options.hpp"
 #include "dem_liggghts_run.hpp"
 #include "dem_run_report.hpp"
@@ -103,9 +104,9 @@ int cmd_dem(const Args& args) {
   if (ck && !opt.case_path.empty() && read_case_file(opt.case_path).resolved_yaml != ck->resolved_yaml)
     throw std::invalid_argument(opt.case_path + " does not match the case stored in " + checkpoint_path(opt.resume_dir) +
                                 "; resume without the case file, or start a new run");
-  if (ck && ck->code_version != CENTREC_VERSION)
+  if (ck && ck->code_version != centrec::code_version())
     std::fprintf(stderr, "centrec dem: warning: checkpoint written by %s, resuming with %s\n", ck->code_version.c_str(),
-                 CENTREC_VERSION);
+                 centrec::code_version());
   if (!cf.dem) throw std::invalid_argument(cf.path + " has no `dem:` section");
   DemCase dc = *cf.dem;
   if (opt.threads >= 0) dc.scene.threads = opt.threads;
@@ -157,7 +158,7 @@ void run_dem_case(const CaseFile& cf, const DemCase& dc, const std::string& out_
     const double since = std::chrono::duration<double>(now - checkpoint_at).count();
     if (!force && !(dc.run.checkpoint_interval > 0.0 && since >= dc.run.checkpoint_interval)) return;
     RunCheckpoint c;
-    c.code_version = CENTREC_VERSION;
+    c.code_version = centrec::code_version();
     c.case_path = cf.path;
     c.resolved_yaml = cf.resolved_yaml;
     c.phase = phase;
@@ -208,7 +209,7 @@ void run_dem_case(const CaseFile& cf, const DemCase& dc, const std::string& out_
 
   DemRunResult r;
   r.engine = "centrec";
-  r.engine_version = CENTREC_VERSION;
+  r.engine_version = centrec::code_version();
   r.threads = sim.threads();
   r.simulated_time = sim.time();
   r.dt = sim.dt();

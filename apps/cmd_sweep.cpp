@@ -17,6 +17,7 @@
 #include "atomic_write.hpp"
 #include "case_file.hpp"
 #include "commands.hpp"
+#include "dem_flow_status.hpp"
 #include "summary_json.hpp"
 
 namespace centrec::cli {
@@ -143,16 +144,16 @@ int cmd_sweep(const Args& args) {
       row["k_eff"] = k;
       row["film_thickness_d"] = s["film"]["mean_thickness_d"];
       row["imposed_mdot_kg_s"] = s["mass_flow_kg_s"];  // the DEM's outlet flow carried to the receiver (eq 2)
-      // A DEM film still filling (outlet below 80 % of the feed over the last window) is not an
-      // operating point: the thermal model then carries the DEM's low outlet flow.
       const auto& dem = s["dem"]["summary"];
-      const bool steady = dem["outlet_mdot_kg_s"].get<double>() >= 0.8 * dem["inlet_mdot_kg_s"].get<double>();
-      row["dem_flow_steady"] = steady;
+      const std::string flow =
+          dem_flow_status(dem["outlet_mdot_kg_s"].get<double>(), dem["inlet_mdot_kg_s"].get<double>());
+      row["dem_flow"] = flow;
+      row["dem_flow_steady"] = flow == "ok";
       csv << s["T_out_K"].get<double>() << ',' << s["efficiency"].get<double>() << ','
           << k["k_eff"].get<double>() << ',' << k["bed_conduction"].get<double>() << ','
           << k["radiation"].get<double>() << ',' << k["mixing"].get<double>() << ','
           << s["film"]["mean_thickness_d"].get<double>() << ','
-          << s["mass_flow_kg_s"].get<double>() << (steady ? ",ok\n" : ",filling\n");
+          << s["mass_flow_kg_s"].get<double>() << ',' << flow << '\n';
     } else {
       ++failed;
       csv << ",,,,,,,,failed\n";

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "code_version.hpp"
 #include "dem_cache.hpp"
 #include "dem_case_run.hpp"
 #include "dem_film_h5.hpp"
@@ -69,7 +70,7 @@ CoupledRun run_coupled_case(const CaseFile& cf, const RunOptions& o) {
       throw std::invalid_argument(cf.path + ": dem.sampling.turns must be > 0: the coupling needs film fields");
     // 1. DEM, or its cached outputs.
     const auto t0 = std::chrono::steady_clock::now();
-    r.cache_key = dem_cache_key(resolved_dem_section(cf), r.dem, CENTREC_VERSION);
+    r.cache_key = dem_cache_key(resolved_dem_section(cf), r.dem, centrec::code_version());
     const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key, [&](const std::string& dir, bool resume) {
       if (resume) std::fprintf(stderr, "centrec run: continuing the interrupted DEM run in %s\n", dir.c_str());
       run_dem_case(cf, r.dem, dir, resume ? std::optional<RunCheckpoint>(read_checkpoint(dir)) : std::nullopt);

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "atomic_write.hpp"
+#include "code_version.hpp"
 #include "h5_file.hpp"
 
 namespace centrec::cli {
@@ -139,7 +140,7 @@ std::string xdmf(const std::vector<NamedSnapshot>& snaps) {
 void write_dem_h5(const std::string& dir, const std::string& case_path, const std::string& resolved_yaml,
                   const dem::scene::SceneConfig& scene, const DemRunResult& run) {
   H5File f = H5File::create(dir + "/dem.h5");
-  f.set_attribute("/", "code_version", CENTREC_VERSION);
+  f.set_attribute("/", "code_version", centrec::code_version());
   f.set_attribute("/", "engine", run.engine);
   f.set_attribute("/", "engine_version", run.engine_version);
   f.set_attribute("/", "case", case_path);

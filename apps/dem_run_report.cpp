@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "atomic_write.hpp"
+#include "code_version.hpp"
 #include "dem/film/steady_state.hpp"
 #include "dem_output_h5.hpp"
 #include "summary_json.hpp"
@@ -47,7 +48,7 @@ nlohmann::json summary(const CaseFile& cf, const DemCase& dc, const DemRunResult
   const auto& log = r.mass_flow;
   const auto& fields = r.fields;
   nlohmann::json j;
-  j["code_version"] = CENTREC_VERSION;
+  j["code_version"] = centrec::code_version();
   j["engine"] = r.engine;
   j["engine_version"] = r.engine_version;
   j["case"] = cf.path;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "atomic_write.hpp"
+#include "code_version.hpp"
 #include "dem/scene/centrec_scene.hpp"
 #include "dem/scene/size_distribution.hpp"
 #include "dem/sphere_mass.hpp"
@@ -242,7 +243,7 @@ std::string deck(const CaseFile& cf, const DemCase& dc, const LiggghtsDeckPlan& 
   const double total_time = (plan.spinup_steps + plan.sampling_steps) * plan.dt;
   std::ostringstream s;
   s << "# LIGGGHTS 3.8 deck for the centrec case " << cf.path << " (" << cf.title << "),\n"
-    << "# written by `centrec export-liggghts` (centrec " << CENTREC_VERSION << "). SI units.\n"
+    << "# written by `centrec export-liggghts` (centrec " << centrec::code_version() << "). SI units.\n"
     << "# Frame (DESIGN.md section 4): drum axis +z from the back plate (z = 0) to the outlet\n"
     << "# (z = L); gravity g (0, -cos tilt, sin tilt); the drum spins at omega about +z.\n"
     << fmt("# D = %.9g m, L = %.9g m, omega = %.9g rad/s, d = %.9g m, dt = %.9g s, %s mode.\n", c.drum.diameter,

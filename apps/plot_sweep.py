@@ -6,9 +6,9 @@ Reads OUT_DIR/sweep.json and writes
   OUT_DIR/sweep_map.png         outlet temperature, efficiency, k_eff and film thickness
                                 against mass flow, one line per rotational speed
   OUT_DIR/sweep_keff_parts.png  k_eff split into bed conduction, radiation and mixing per point
-Points whose DEM had not reached steady flow (outlet below 80 % of the feed over the last
-window; `dem_flow_steady` in sweep.json, `filling` in sweep.csv) are drawn hollow: their film is still
-filling, so the flow the thermal model carries is the DEM's low outlet flow.
+Points whose DEM had not reached steady flow over the last window (`dem_flow` in sweep.json
+and the status in sweep.csv: `filling`, outlet below 80 % of the feed, or `draining`, above
+125 %) are drawn hollow: the flow the thermal model carries is then not the feed.
 Uses Debian's python3-matplotlib (hence /usr/bin/python3).
 """
 import json
@@ -46,13 +46,13 @@ def main(out):
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
         ax.legend()
-    fig.suptitle("operating map: %s (hollow: DEM film still filling, outlet < 80 %% of feed)" % sweep["case"])
+    fig.suptitle("operating map: %s (hollow: DEM flow not steady, outlet < 80 %% or > 125 %% of feed)" % sweep["case"])
     fig.tight_layout()
     fig.savefig(os.path.join(out, "sweep_map.png"), dpi=120)
     plt.close(fig)
 
     fig, ax = plt.subplots(figsize=(10, 4.5))
-    names = ["%.4g rpm\n%.4g kg/s%s" % (p["speed_rpm"], p["mass_flow_kg_s"], "" if p["steady"] else "\n(filling)")
+    names = ["%.4g rpm\n%.4g kg/s%s" % (p["speed_rpm"], p["mass_flow_kg_s"], "" if p["steady"] else "\n(%s)" % p.get("dem_flow", "filling"))
              for p in pts]
     bottom = [0.0] * len(pts)
     for part in ("bed_conduction", "radiation", "mixing"):

@@ -1,5 +1,6 @@
 #include "thermal_output.hpp"
 
+#include "code_version.hpp"
 #include "film_field_h5.hpp"
 #include "h5_file.hpp"
 
@@ -58,7 +59,7 @@ void write_thermal_h5(const std::string& path, const ThermalCase& c, const Therm
 }
 
 void write_thermal_groups(io::H5File& f, const ThermalCase& c, const ThermalRun& r) {
-  f.set_attribute("/", "centrec_version", CENTREC_VERSION);
+  f.set_attribute("/", "centrec_version", centrec::code_version());
   f.set_attribute("/", "config", c.resolved_yaml);
   f.set_attribute("/", "case_file", c.path);
   f.set_attribute("/", "title", c.title);
@@ -120,7 +121,7 @@ nlohmann::json thermal_summary(const ThermalCase& c, const ThermalRun& r) {
   const thermal::FilmBalance& b = r.balance;
   const thermal::FilmGrid& g = r.op->grid();
   nlohmann::json j;
-  j["centrec_version"] = CENTREC_VERSION;
+  j["centrec_version"] = centrec::code_version();
   j["case"] = c.path;
   j["title"] = c.title;
   j["film_source"] = c.film_source;

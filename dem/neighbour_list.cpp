@@ -55,10 +55,14 @@ std::vector<std::int32_t> sort_into_cells(CellGrid& grid, const std::vector<Vec3
   // Cap the cell count near the particle count: a stray particle far away must not
   // make the grid explode (the search stays correct with larger cells).
   const double max_cells = 4.0 * static_cast<double>(n) + 64.0;
+  // Along a period the cells may be shorter than in x and y (length / nz, at least the
+  // cut-off), so enlarging the cells never takes a period that holds 3 below 3.
+  const int nz_most = pz.on ? static_cast<int>(pz.length() / cutoff) : 0;
   for (;;) {
     grid.nx = static_cast<int>((hi.x - lo.x) / cell) + 1;
     grid.ny = static_cast<int>((hi.y - lo.y) / cell) + 1;
-    grid.nz = pz.on ? static_cast<int>(pz.length() / cell) : static_cast<int>((hi.z - lo.z) / cell) + 1;
+    grid.nz = pz.on ? std::min(nz_most, std::max(3, static_cast<int>(pz.length() / cell)))
+                    : static_cast<int>((hi.z - lo.z) / cell) + 1;
     if (static_cast<double>(grid.nx) * grid.ny * std::max(grid.nz, 1) <= max_cells || (pz.on && grid.nz <= 3)) break;
     cell *= 1.5;
   }

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "dem_flow_status.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -40,12 +42,24 @@ TEST(SweepCli, TwoPointsInParallelGiveATable) {
   const auto& b = j["points"][1];
   EXPECT_EQ(a["status"], 0);
   EXPECT_EQ(b["status"], 0);
-  EXPECT_TRUE(a.contains("dem_flow_steady"));
-  EXPECT_TRUE(b.contains("dem_flow_steady"));
+  for (const auto* p : {&a, &b}) {
+    const std::string flow = (*p)["dem_flow"];
+    EXPECT_TRUE(flow == "ok" || flow == "filling" || flow == "draining") << flow;
+    EXPECT_EQ((*p)["dem_flow_steady"].get<bool>(), flow == "ok");
+  }
   EXPECT_GT(a["T_out_K"].get<double>(), 873.15);
   EXPECT_GT(a["k_eff"]["k_eff"].get<double>(), 0.0);
   // Different feeds, different DEM films, different answers.
   EXPECT_NE(a["T_out_K"].get<double>(), b["T_out_K"].get<double>());
   EXPECT_TRUE(fs::exists(dir + "/sweep/sweep.csv"));
   fs::remove_all(dir);
+}
+
+// The band that makes a sweep point an operating point: outlet within 1.25x of the feed.
+TEST(SweepCli, DemFlowStatusBand) {
+  EXPECT_EQ(centrec::cli::dem_flow_status(0.79, 1.0), "filling");
+  EXPECT_EQ(centrec::cli::dem_flow_status(0.80, 1.0), "ok");
+  EXPECT_EQ(centrec::cli::dem_flow_status(1.187, 1.0), "ok");  // 55.45 rpm / 0.2 kg/s of the receiver_1m sweep
+  EXPECT_EQ(centrec::cli::dem_flow_status(1.25, 1.0), "ok");
+  EXPECT_EQ(centrec::cli::dem_flow_status(1.26, 1.0), "draining");
 }

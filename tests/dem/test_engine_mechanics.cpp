@@ -4,8 +4,11 @@
 
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "dem/neighbour_list.hpp"
 #include "dem_test_support.hpp"
 
 using namespace centrec::dem;
@@ -157,4 +160,29 @@ TEST(EngineMechanics, PeriodicZUsesTheMinimumImage) {
   Simulation short_period(bad);
   short_period.add_particle({{0, 0, 1e-3}, {}, {}, kRadius});
   EXPECT_THROW(short_period.step(1), std::invalid_argument);
+}
+
+// Few particles spread far in x make the grid enlarge its cells (the cell count is capped
+// near the particle count); a period that holds 3 cut-off lengths must keep 3 cells along
+// z (it once dropped from 4 to 2 and was refused as "shorter than 3 neighbour cells").
+TEST(EngineMechanics, PeriodOfThreeCutoffsSurvivesCellEnlargement) {
+  const double cutoff = 1.0;
+  PeriodicZ pz;
+  pz.on = true;
+  pz.lo = 0.0;
+  pz.hi = 4.2 * cutoff;  // 4 cells at the cut-off, 2 after one enlargement by 1.5
+  const std::vector<Vec3> x = {{0.0, 0.0, 0.5}, {100.0, 0.0, 3.7}};
+  CellGrid grid;
+  ASSERT_NO_THROW(sort_into_cells(grid, x, cutoff, pz));
+  EXPECT_EQ(grid.nz, 3);
+  EXPECT_GE(pz.length() / grid.nz, cutoff);  // a z cell still spans the cut-off
+  EXPECT_LT(grid.inv_cx, 1.0 / cutoff);  // the cells were enlarged (the case this test is about)
+
+  pz.hi = 2.5 * cutoff;  // genuinely too short: refused, naming the period
+  try {
+    sort_into_cells(grid, x, cutoff, pz);
+    FAIL() << "a period of 2.5 cut-offs was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("shorter than 3 neighbour cells"), std::string::npos) << e.what();
+  }
 }
