@@ -168,6 +168,10 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
       out.nbr[k++] = j;
     });
   }
+  out.reach = 0;
+  for (long i = 0; i < n; ++i)
+    for (std::uint32_t e = out.start[i]; e < out.start[i + 1]; ++e)
+      if (const long d = out.nbr[e] - i; d <= n / 2) out.reach = std::max(out.reach, d);
   // Reverse index, in increasing entry order (a stable counting sort by partner).
   out.rev_start.assign(static_cast<std::size_t>(n) + 1, 0);
   for (std::int32_t j : out.nbr) ++out.rev_start[static_cast<std::size_t>(j) + 1];

@@ -27,6 +27,9 @@ struct NeighbourList {
   std::vector<ContactHistory> hist;  // history of the pair (zero = not in contact)
   std::vector<std::uint32_t> rev_start;  // rows + 1: entries naming j have rev_pos in [rev_start[j], rev_start[j + 1])
   std::vector<std::uint32_t> rev_pos;    // per entry: its position in that order (grouped by nbr, then by entry)
+  // Largest partner distance j - i of an entry that does not reach round a periodic
+  // boundary (j - i <= rows / 2): how far ahead of row i its partners' data is first read.
+  long reach = 0;
   std::size_t rows() const { return start.empty() ? 0 : start.size() - 1; }
   std::size_t bytes() const;
 };

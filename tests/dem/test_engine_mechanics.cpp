@@ -186,3 +186,33 @@ TEST(EngineMechanics, PeriodOfThreeCutoffsSurvivesCellEnlargement) {
     EXPECT_NE(std::string(e.what()).find("shorter than 3 neighbour cells"), std::string::npos) << e.what();
   }
 }
+
+// The list's reach (how far ahead of a row the force pass fetches partner data) is the
+// largest forward partner distance, not counting entries that close a periodic ring.
+TEST(EngineMechanics, NeighbourListReachSkipsPeriodicWrapEntries) {
+  PeriodicZ pz;
+  pz.on = true;
+  pz.lo = 0.0;
+  pz.hi = 10.0;
+  std::vector<Vec3> x;
+  for (int k = 0; k < 10; ++k) x.push_back({0.0, 0.0, 0.5 + k});  // a touching chain round the period
+  const std::vector<double> r(x.size(), 0.5);
+  const std::vector<Motion> motion(x.size(), Motion::free);
+  CellGrid grid;
+  const std::vector<std::int32_t> order = sort_into_cells(grid, x, 1.1, pz);
+  for (std::size_t k = 0; k < order.size(); ++k) ASSERT_EQ(order[k], static_cast<std::int32_t>(k));
+  NeighbourList list;
+  build_neighbour_list(list, grid, x, r, motion, 0.1, pz, NeighbourList{}, 1);
+  ASSERT_EQ(list.nbr.size(), 10u);  // 9 links along the chain and the one across the period
+  bool wrap_entry = false;
+  for (std::uint32_t e = list.start[0]; e < list.start[1]; ++e) wrap_entry |= list.nbr[e] == 9;
+  EXPECT_TRUE(wrap_entry);
+  EXPECT_EQ(list.reach, 1);
+
+  // A skin of 1.2 takes in second neighbours: rows reach two ahead, and across the period
+  // (0-8, 0-9, 1-9) eight or nine, which do not count.
+  sort_into_cells(grid, x, 2.2, pz);
+  build_neighbour_list(list, grid, x, r, motion, 1.2, pz, NeighbourList{}, 1);
+  ASSERT_EQ(list.nbr.size(), 20u);
+  EXPECT_EQ(list.reach, 2);
+}
