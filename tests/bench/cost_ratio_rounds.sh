@@ -1,0 +1,31 @@
+#!/bin/bash
+# Cost per particle of the 2e5 film relative to the 1e4 film, measured in rounds that
+# alternate the two sizes (centrec only), so that a slow spell of this shared machine hits
+# both sizes of a round instead of one size of a whole benchmark run.
+#   tests/bench/cost_ratio_rounds.sh [ROUNDS] [THREADS]      (defaults 3 rounds, 1 thread)
+# Each round: 1e4 = settle 1500 + 3 x 2000 timed steps, then 2e5 = settle 1500 + 3 x 500
+# (about 2.5 min per round on one core). Prints one line per round and the median ratio.
+set -euo pipefail
+rounds=${1:-3}
+threads=${2:-1}
+here=$(cd "$(dirname "$0")/../.." && pwd)
+bench=${BENCH:-$here/${BUILD_DIR:-build}/tests/bench/centrec_bench_film}
+[ -x "$bench" ] || { echo "no benchmark at $bench (run ./setup.sh, or set BENCH)" >&2; exit 1; }
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+speed() {  # particle-steps/s of the centrec row of a results.csv
+  awk -F, '$1 == "centrec" { print $6 }' "$1/results.csv"
+}
+
+ratios=()
+for r in $(seq "$rounds"); do
+  "$bench" --no-liggghts --sizes 10000 --threads "$threads" --steps 2000 --settle 1500 --repeats 3 --out "$out/small" >/dev/null
+  "$bench" --no-liggghts --sizes 200000 --threads "$threads" --steps 500 --settle 1500 --repeats 3 --out "$out/large" >/dev/null
+  small=$(speed "$out/small")
+  large=$(speed "$out/large")
+  ratio=$(awk -v a="$small" -v b="$large" 'BEGIN { printf "%.3f", a / b }')
+  ratios+=("$ratio")
+  echo "round $r: 1e4 $small, 2e5 $large particle-steps/s, cost per particle 2e5 / 1e4 = $ratio"
+done
+printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { printf "median cost ratio over %d rounds: %s\n", NR, a[int((NR + 1) / 2)] }'
