@@ -20,6 +20,10 @@ const char* kHelp =
     "  --repeats-per-size R,R,..  one repeat count per size (overrides --repeats)\n"
     "  --no-liggghts        time centrec only\n"
     "  --no-centrec         time LIGGGHTS only\n"
+    "  --interleave         centrec: settle every size first, then alternate the sizes' timed\n"
+    "                       phases (phase k of each size in turn), so a slow spell of the machine\n"
+    "                       hits all sizes and does not skew the cost per particle between them\n"
+    "                       (LIGGGHTS runs stay one after the other)\n"
     "  --liggghts-skin F    LIGGGHTS neighbour skin in diameters (default 0.4)\n"
     "  --centrec-skin F     centrec Verlet skin in diameters (default 0.4)\n"
     "  --stl-facets K       facets around the LIGGGHTS cylinder mesh (default 720)\n"
@@ -67,6 +71,7 @@ BenchOptions parse_bench_options(int argc, char** argv) {
     else if (a == "--repeats-per-size") o.repeats_per_size = parse_list<int>(a, value());
     else if (a == "--no-liggghts") o.liggghts = false;
     else if (a == "--no-centrec") o.centrec = false;
+    else if (a == "--interleave") o.interleave = true;
     else if (a == "--liggghts-skin") o.liggghts_skin_d = parse_positive(a, value());
     else if (a == "--centrec-skin") o.centrec_skin_d = parse_positive(a, value());
     else if (a == "--stl-facets") o.stl_facets = static_cast<int>(parse_positive(a, value()));

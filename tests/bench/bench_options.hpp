@@ -14,6 +14,7 @@ struct BenchOptions {
   std::vector<int> repeats_per_size;             // optional, overrides repeats per size
   bool liggghts = true;
   bool centrec = true;
+  bool interleave = false;                        // centrec: alternate the sizes' timed phases
   double liggghts_skin_d = 0.4;                   // neighbour skin / d
   double centrec_skin_d = 0.4;
   int stl_facets = 720;                           // facets around the cylinder

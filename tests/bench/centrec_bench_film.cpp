@@ -3,7 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -68,6 +70,11 @@ int main(int argc, char** argv) {
       std::printf("warning: %s or %s not found on PATH: LIGGGHTS skipped\n", o.mpirun.c_str(), o.liggghts_exe.c_str());
 
     std::vector<BenchRow> rows;
+    std::vector<FilmState> states;  // kept for the interleaved centrec phases
+    auto write_tables = [&] {
+      write_text(o.out + "/results.md", format_markdown(c, rows, preamble(c, o)));
+      write_csv(o.out + "/results.csv", rows);
+    };
     for (std::size_t si = 0; si < o.sizes.size(); ++si) {
       const int repeats = o.repeats_per_size.empty() ? o.repeats : o.repeats_per_size[si];
       // One lattice file per N; both engines read this file (centrec via read_film_state,
@@ -77,7 +84,7 @@ int main(int argc, char** argv) {
       fs::create_directories(dir);
       const std::string state_file = dir + "/film_initial_state.txt";
       write_film_state(state_file, made);
-      const FilmState s = read_film_state(state_file);
+      const FilmState& s = states.emplace_back(read_film_state(state_file));
       std::printf("N = %zu (target %ld): periodic length %.4g m = %.1f d, state %s\n", s.particles.size(),
                   o.sizes[si], s.length, s.length / c.diameter, state_file.c_str());
       if (run_lig) {
@@ -108,7 +115,7 @@ int main(int argc, char** argv) {
           row.liggghts = run_liggghts(c, s, lig);
           print_result(row.liggghts);
         }
-        if (o.centrec) {
+        if (o.centrec && !o.interleave) {
           CentrecRunSettings cr;
           cr.threads = t;
           cr.skin_fraction = o.centrec_skin_d;
@@ -120,9 +127,34 @@ int main(int argc, char** argv) {
         }
         rows.push_back(row);
         // Rewrite the tables after every point so an interrupted run keeps what it measured.
-        const std::string md = format_markdown(c, rows, preamble(c, o));
-        write_text(o.out + "/results.md", md);
-        write_csv(o.out + "/results.csv", rows);
+        write_tables();
+      }
+    }
+    if (o.centrec && o.interleave) {
+      for (std::size_t ti = 0; ti < o.threads.size(); ++ti) {
+        std::vector<std::unique_ptr<CentrecFilmRun>> runs;
+        std::vector<int> repeats;
+        for (std::size_t si = 0; si < states.size(); ++si) {
+          CentrecRunSettings cr;
+          cr.threads = o.threads[ti];
+          cr.skin_fraction = o.centrec_skin_d;
+          cr.settle_steps = o.settle_steps;
+          cr.timed_steps = o.steps;
+          cr.repeats = o.repeats_per_size.empty() ? o.repeats : o.repeats_per_size[si];
+          repeats.push_back(cr.repeats);
+          runs.push_back(std::make_unique<CentrecFilmRun>(c, states[si], cr));
+        }
+        const int most = *std::max_element(repeats.begin(), repeats.end());
+        for (int k = 0; k < most; ++k)
+          for (std::size_t si = 0; si < states.size(); ++si)
+            if (k < repeats[si]) runs[si]->time_phase();
+        for (std::size_t si = 0; si < states.size(); ++si) {
+          BenchRow& row = rows[si * o.threads.size() + ti];
+          row.centrec = runs[si]->finish();
+          std::printf("N = %ld, phases interleaved with the other sizes':\n", row.particles);
+          print_result(row.centrec);
+        }
+        write_tables();
       }
     }
     const std::string md = format_markdown(c, rows, preamble(c, o));

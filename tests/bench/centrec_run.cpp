@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <vector>
 
 #include "dem/simulation.hpp"
@@ -48,15 +49,27 @@ dem::SimulationConfig make_config(const FilmCase& c, const FilmState& s, const C
 
 }  // namespace
 
-EngineResult run_centrec(const FilmCase& c, const FilmState& s, const CentrecRunSettings& r) {
+struct CentrecFilmRun::State {
+  FilmCase c;
+  CentrecRunSettings r;
   EngineResult res;
+  std::unique_ptr<dem::Simulation> sim;
+  std::size_t rebuilds0 = 0;
+};
+
+CentrecFilmRun::CentrecFilmRun(const FilmCase& c, const FilmState& s, const CentrecRunSettings& r)
+    : st_(std::make_unique<State>()) {
+  st_->c = c;
+  st_->r = r;
+  EngineResult& res = st_->res;
   res.engine = "centrec";
   res.workers = r.threads;
   res.particles = static_cast<long>(s.particles.size());
   res.steps = r.timed_steps;
   try {
     const std::size_t rss0 = resident_bytes();
-    dem::Simulation sim(make_config(c, s, r));
+    st_->sim = std::make_unique<dem::Simulation>(make_config(c, s, r));
+    dem::Simulation& sim = *st_->sim;
     // Particles and the wall as two materials (same E, nu; per-pair e, mu, mu_r), as the
     // deck's atom types 1 and 2.
     const int grain = sim.add_material({c.youngs_modulus, c.poisson_ratio, c.density});
@@ -79,24 +92,46 @@ EngineResult run_centrec(const FilmCase& c, const FilmState& s, const CentrecRun
     res.bytes_per_particle = static_cast<double>(sim.memory_bytes()) / res.particles;
     const std::size_t rss1 = resident_bytes();
     if (rss1 > rss0) res.rss_bytes_per_particle = static_cast<double>(rss1 - rss0) / res.particles;
-    const std::size_t rebuilds0 = sim.neighbour_stats().rebuilds;
-    for (int k = 0; k < r.repeats; ++k) {
-      const auto t0 = std::chrono::steady_clock::now();
-      sim.step(r.timed_steps);
-      const auto t1 = std::chrono::steady_clock::now();
-      res.seconds.push_back(std::chrono::duration<double>(t1 - t0).count());
-    }
-    res.final = summarize(c, sim);
-    const dem::NeighbourStats ns = sim.neighbour_stats();
-    // NeighbourStats::list_entries holds each pair once (half list), as LIGGGHTS' count.
-    res.list_pairs_per_particle = static_cast<double>(ns.list_entries) / res.particles;
-    res.rebuilds_per_phase = static_cast<double>(ns.rebuilds - rebuilds0) / r.repeats;
-    res.ok = res.final.atoms == res.particles;
-    if (!res.ok) res.note = "centrec lost particles";
+    st_->rebuilds0 = sim.neighbour_stats().rebuilds;
   } catch (const std::exception& e) {
     res.note = std::string("centrec failed: ") + e.what();
+    st_->sim.reset();
   }
+}
+
+CentrecFilmRun::~CentrecFilmRun() = default;
+
+void CentrecFilmRun::time_phase() {
+  if (!st_->sim) return;
+  try {
+    const auto t0 = std::chrono::steady_clock::now();
+    st_->sim->step(st_->r.timed_steps);
+    const auto t1 = std::chrono::steady_clock::now();
+    st_->res.seconds.push_back(std::chrono::duration<double>(t1 - t0).count());
+  } catch (const std::exception& e) {
+    st_->res.note = std::string("centrec failed: ") + e.what();
+    st_->sim.reset();
+  }
+}
+
+EngineResult CentrecFilmRun::finish() {
+  EngineResult& res = st_->res;
+  if (!st_->sim || res.seconds.empty()) return res;
+  const dem::Simulation& sim = *st_->sim;
+  res.final = summarize(st_->c, sim);
+  const dem::NeighbourStats ns = sim.neighbour_stats();
+  // NeighbourStats::list_entries holds each pair once (half list), as LIGGGHTS' count.
+  res.list_pairs_per_particle = static_cast<double>(ns.list_entries) / res.particles;
+  res.rebuilds_per_phase = static_cast<double>(ns.rebuilds - st_->rebuilds0) / static_cast<double>(res.seconds.size());
+  res.ok = res.final.atoms == res.particles;
+  if (!res.ok) res.note = "centrec lost particles";
   return res;
+}
+
+EngineResult run_centrec(const FilmCase& c, const FilmState& s, const CentrecRunSettings& r) {
+  CentrecFilmRun run(c, s, r);
+  for (int k = 0; k < r.repeats; ++k) run.time_phase();
+  return run.finish();
 }
 
 }  // namespace centrec::bench

@@ -1,6 +1,8 @@
 #pragma once
 // Runs the centrec DEM engine on the benchmark film: the same initial state, settle and
 // timed phases as the LIGGGHTS deck.
+#include <memory>
+
 #include "tests/bench/engine_result.hpp"
 #include "tests/bench/film_case.hpp"
 #include "tests/bench/film_initial_state.hpp"
@@ -15,6 +17,24 @@ struct CentrecRunSettings {
   int repeats = 3;             // consecutive timed phases
 };
 
+// One centrec film: built and settled on construction, then timed one phase at a time, so
+// that the phases of several films can be interleaved (a slow spell of a shared machine
+// then hits every size, not one).
+class CentrecFilmRun {
+ public:
+  CentrecFilmRun(const FilmCase& c, const FilmState& s, const CentrecRunSettings& r);
+  ~CentrecFilmRun();
+  CentrecFilmRun(const CentrecFilmRun&) = delete;
+  CentrecFilmRun& operator=(const CentrecFilmRun&) = delete;
+  void time_phase();      // one timed phase of r.timed_steps (no-op after a failure)
+  EngineResult finish();  // final state and statistics
+
+ private:
+  struct State;
+  std::unique_ptr<State> st_;
+};
+
+// Settle and r.repeats consecutive timed phases.
 EngineResult run_centrec(const FilmCase& c, const FilmState& s, const CentrecRunSettings& r);
 
 }  // namespace centrec::bench
