@@ -1,9 +1,9 @@
 // centrec_bench_film: issue 2 item 5. Times centrec and LIGGGHTS 3.8 on the same settled
 // particle film in the D12 drum at several N and thread/rank counts; see --help.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -55,6 +55,20 @@ std::string preamble(const FilmCase& c, const BenchOptions& o) {
   return b;
 }
 
+int repeats_of(const BenchOptions& o, std::size_t size_index) {
+  return o.repeats_per_size.empty() ? o.repeats : o.repeats_per_size[size_index];
+}
+
+CentrecRunSettings centrec_settings(const BenchOptions& o, int threads, std::size_t size_index) {
+  CentrecRunSettings cr;
+  cr.threads = threads;
+  cr.skin_fraction = o.centrec_skin_d;
+  cr.settle_steps = o.settle_steps;
+  cr.timed_steps = o.steps;
+  cr.repeats = repeats_of(o, size_index);
+  return cr;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,7 +90,6 @@ int main(int argc, char** argv) {
       write_csv(o.out + "/results.csv", rows);
     };
     for (std::size_t si = 0; si < o.sizes.size(); ++si) {
-      const int repeats = o.repeats_per_size.empty() ? o.repeats : o.repeats_per_size[si];
       // One lattice file per N; both engines read this file (centrec via read_film_state,
       // LIGGGHTS via the data file converted from what was read back).
       const FilmState made = make_film_lattice(c, o.sizes[si]);
@@ -111,18 +124,12 @@ int main(int argc, char** argv) {
           lig.deck.skin = o.liggghts_skin_d * c.diameter;
           lig.deck.settle_steps = o.settle_steps;
           lig.deck.timed_steps = o.steps;
-          lig.deck.repeats = repeats;
+          lig.deck.repeats = repeats_of(o, si);
           row.liggghts = run_liggghts(c, s, lig);
           print_result(row.liggghts);
         }
         if (o.centrec && !o.interleave) {
-          CentrecRunSettings cr;
-          cr.threads = t;
-          cr.skin_fraction = o.centrec_skin_d;
-          cr.settle_steps = o.settle_steps;
-          cr.timed_steps = o.steps;
-          cr.repeats = repeats;
-          row.centrec = run_centrec(c, s, cr);
+          row.centrec = run_centrec(c, s, centrec_settings(o, t, si));
           print_result(row.centrec);
         }
         rows.push_back(row);
@@ -133,21 +140,14 @@ int main(int argc, char** argv) {
     if (o.centrec && o.interleave) {
       for (std::size_t ti = 0; ti < o.threads.size(); ++ti) {
         std::vector<std::unique_ptr<CentrecFilmRun>> runs;
-        std::vector<int> repeats;
+        int most = 0;
         for (std::size_t si = 0; si < states.size(); ++si) {
-          CentrecRunSettings cr;
-          cr.threads = o.threads[ti];
-          cr.skin_fraction = o.centrec_skin_d;
-          cr.settle_steps = o.settle_steps;
-          cr.timed_steps = o.steps;
-          cr.repeats = o.repeats_per_size.empty() ? o.repeats : o.repeats_per_size[si];
-          repeats.push_back(cr.repeats);
-          runs.push_back(std::make_unique<CentrecFilmRun>(c, states[si], cr));
+          runs.push_back(std::make_unique<CentrecFilmRun>(c, states[si], centrec_settings(o, o.threads[ti], si)));
+          most = std::max(most, repeats_of(o, si));
         }
-        const int most = *std::max_element(repeats.begin(), repeats.end());
         for (int k = 0; k < most; ++k)
           for (std::size_t si = 0; si < states.size(); ++si)
-            if (k < repeats[si]) runs[si]->time_phase();
+            if (k < repeats_of(o, si)) runs[si]->time_phase();
         for (std::size_t si = 0; si < states.size(); ++si) {
           BenchRow& row = rows[si * o.threads.size() + ti];
           row.centrec = runs[si]->finish();
