@@ -4,6 +4,7 @@
 #include <cmath>
 #include <exception>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "dem/simulation.hpp"
@@ -55,6 +56,10 @@ struct CentrecFilmRun::State {
   EngineResult res;
   std::unique_ptr<dem::Simulation> sim;
   std::size_t rebuilds0 = 0;
+  void fail(const std::exception& e) {  // keeps what was timed; later phases do nothing
+    res.note = std::string("centrec failed: ") + e.what();
+    sim.reset();
+  }
 };
 
 CentrecFilmRun::CentrecFilmRun(const FilmCase& c, const FilmState& s, const CentrecRunSettings& r)
@@ -94,8 +99,7 @@ CentrecFilmRun::CentrecFilmRun(const FilmCase& c, const FilmState& s, const Cent
     if (rss1 > rss0) res.rss_bytes_per_particle = static_cast<double>(rss1 - rss0) / res.particles;
     st_->rebuilds0 = sim.neighbour_stats().rebuilds;
   } catch (const std::exception& e) {
-    res.note = std::string("centrec failed: ") + e.what();
-    st_->sim.reset();
+    st_->fail(e);
   }
 }
 
@@ -109,8 +113,7 @@ void CentrecFilmRun::time_phase() {
     const auto t1 = std::chrono::steady_clock::now();
     st_->res.seconds.push_back(std::chrono::duration<double>(t1 - t0).count());
   } catch (const std::exception& e) {
-    st_->res.note = std::string("centrec failed: ") + e.what();
-    st_->sim.reset();
+    st_->fail(e);
   }
 }
 
