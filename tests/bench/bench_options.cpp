@@ -1,5 +1,7 @@
 #include "tests/bench/bench_options.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -15,6 +17,8 @@ const char* kHelp =
     "  --sizes N,N,..       target particle counts (default 10000,50000,200000)\n"
     "  --threads T,T,..     centrec OpenMP threads = LIGGGHTS MPI ranks (default 1,2)\n"
     "  --steps S            steps per timed phase (default 1000)\n"
+    "  --phase-particle-steps P  every size's timed phase does P particle-steps: steps =\n"
+    "                       round(P / N), overrides --steps (equal work, equal duration per phase)\n"
     "  --settle S           untimed settle steps before timing (default 2000)\n"
     "  --repeats R          timed phases per run; the median is reported (default 3)\n"
     "  --repeats-per-size R,R,..  one repeat count per size (overrides --repeats)\n"
@@ -52,6 +56,11 @@ double parse_positive(const std::string& opt, const std::string& s) {
 
 }  // namespace
 
+long timed_steps_for(const BenchOptions& o, long n) {
+  if (o.phase_particle_steps <= 0.0 || n <= 0) return o.steps;
+  return std::max(1L, std::lround(o.phase_particle_steps / static_cast<double>(n)));
+}
+
 BenchOptions parse_bench_options(int argc, char** argv) {
   BenchOptions o;
   for (int i = 1; i < argc; ++i) {
@@ -66,6 +75,7 @@ BenchOptions parse_bench_options(int argc, char** argv) {
     } else if (a == "--sizes") o.sizes = parse_list<long>(a, value());
     else if (a == "--threads") o.threads = parse_list<int>(a, value());
     else if (a == "--steps") o.steps = static_cast<long>(parse_positive(a, value()));
+    else if (a == "--phase-particle-steps") o.phase_particle_steps = parse_positive(a, value());
     else if (a == "--settle") o.settle_steps = static_cast<long>(parse_positive(a, value()));
     else if (a == "--repeats") o.repeats = static_cast<int>(parse_positive(a, value()));
     else if (a == "--repeats-per-size") o.repeats_per_size = parse_list<int>(a, value());

@@ -9,6 +9,10 @@ struct BenchOptions {
   std::vector<long> sizes{10000, 50000, 200000};  // target N (rounded to whole lattice rows)
   std::vector<int> threads{1, 2};                 // centrec threads = LIGGGHTS ranks
   long steps = 1000;                              // per timed phase
+  // When > 0: every size's timed phase is this many particle-steps (steps = round(P / N),
+  // overrides steps), so the small film's phases last as long as the large one's and a
+  // short slow spell of a shared machine weighs the same on every size.
+  double phase_particle_steps = 0.0;
   long settle_steps = 2000;
   int repeats = 3;
   std::vector<int> repeats_per_size;             // optional, overrides repeats per size
@@ -22,6 +26,9 @@ struct BenchOptions {
   std::string liggghts_exe = "liggghts";
   std::string mpirun = "mpirun";
 };
+
+// Steps of one timed phase of a film of n particles.
+long timed_steps_for(const BenchOptions& o, long n);
 
 // Parses argv; prints help and exits(0) on --help; throws std::invalid_argument on errors.
 BenchOptions parse_bench_options(int argc, char** argv);

@@ -37,6 +37,11 @@ void print_result(const EngineResult& r) {
 }
 
 std::string preamble(const FilmCase& c, const BenchOptions& o) {
+  char phase[128];
+  if (o.phase_particle_steps > 0)
+    std::snprintf(phase, sizeof phase, "%.3g particle-steps (steps = that / N, see the csv)", o.phase_particle_steps);
+  else
+    std::snprintf(phase, sizeof phase, "%ld steps", o.steps);
   char b[1024];
   const std::time_t now = std::time(nullptr);
   char when[64];
@@ -45,12 +50,12 @@ std::string preamble(const FilmCase& c, const BenchOptions& o) {
                 "# centrec vs LIGGGHTS 3.8: settled film in the D12 drum\n\n"
                 "%s, %u hardware threads. Case: D = %.3g m, %.2f rpm (omega %.4f rad/s), gravity %.2f m/s^2 at %.0f deg "
                 "to the axis, periodic in z; d = %.3g m, rho = %.0f, E = %.3g Pa, nu = %.2f, e = %.2f, mu = %.2f, "
-                "mu_r = %.2f, wall mu = %.0f, wall mu_r = %.2f; dt = %.3g s; %d lattice layers. Timed phase: %ld steps "
+                "mu_r = %.2f, wall mu = %.0f, wall mu_r = %.2f; dt = %.3g s; %d lattice layers. Timed phase: %s "
                 "after %ld settle steps, median of the repeats. LIGGGHTS: skin %.2f d, STL %d facets around. centrec: "
                 "skin %.2f d, wall rolling in LIGGGHTS form.\n",
                 when, std::thread::hardware_concurrency(), 2 * c.drum_radius, c.rpm, c.omega(), c.gravity, c.tilt_deg,
                 c.diameter, c.density, c.youngs_modulus, c.poisson_ratio, c.restitution, c.friction,
-                c.rolling_friction, c.wall_friction, c.wall_rolling_friction, c.dt, c.layers, o.steps, o.settle_steps,
+                c.rolling_friction, c.wall_friction, c.wall_rolling_friction, c.dt, c.layers, phase, o.settle_steps,
                 o.liggghts_skin_d, o.stl_facets, o.centrec_skin_d);
   return b;
 }
@@ -59,12 +64,12 @@ int repeats_of(const BenchOptions& o, std::size_t size_index) {
   return o.repeats_per_size.empty() ? o.repeats : o.repeats_per_size[size_index];
 }
 
-CentrecRunSettings centrec_settings(const BenchOptions& o, int threads, std::size_t size_index) {
+CentrecRunSettings centrec_settings(const BenchOptions& o, int threads, std::size_t size_index, long particles) {
   CentrecRunSettings cr;
   cr.threads = threads;
   cr.skin_fraction = o.centrec_skin_d;
   cr.settle_steps = o.settle_steps;
-  cr.timed_steps = o.steps;
+  cr.timed_steps = timed_steps_for(o, particles);
   cr.repeats = repeats_of(o, size_index);
   return cr;
 }
@@ -123,13 +128,13 @@ int main(int argc, char** argv) {
           lig.deck.ranks = t;
           lig.deck.skin = o.liggghts_skin_d * c.diameter;
           lig.deck.settle_steps = o.settle_steps;
-          lig.deck.timed_steps = o.steps;
+          lig.deck.timed_steps = timed_steps_for(o, row.particles);
           lig.deck.repeats = repeats_of(o, si);
           row.liggghts = run_liggghts(c, s, lig);
           print_result(row.liggghts);
         }
         if (o.centrec && !o.interleave) {
-          row.centrec = run_centrec(c, s, centrec_settings(o, t, si));
+          row.centrec = run_centrec(c, s, centrec_settings(o, t, si, row.particles));
           print_result(row.centrec);
         }
         rows.push_back(row);
@@ -142,7 +147,7 @@ int main(int argc, char** argv) {
         std::vector<std::unique_ptr<CentrecFilmRun>> runs;
         int most = 0;
         for (std::size_t si = 0; si < states.size(); ++si) {
-          runs.push_back(std::make_unique<CentrecFilmRun>(c, states[si], centrec_settings(o, o.threads[ti], si)));
+          runs.push_back(std::make_unique<CentrecFilmRun>(c, states[si], centrec_settings(o, o.threads[ti], si, static_cast<long>(states[si].particles.size()))));
           most = std::max(most, repeats_of(o, si));
         }
         for (int k = 0; k < most; ++k)

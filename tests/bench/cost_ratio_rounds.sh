@@ -3,8 +3,9 @@
 # alternate the two sizes (centrec only), so that a slow spell of this shared machine hits
 # both sizes of a round instead of one size of a whole benchmark run.
 #   tests/bench/cost_ratio_rounds.sh [ROUNDS] [THREADS]      (defaults 3 rounds, 1 thread)
-# Each round: 1e4 = settle 1500 + 3 x 2000 timed steps, then 2e5 = settle 1500 + 3 x 500
-# (about 2.5 min per round on one core). Prints one line per round and the median ratio.
+# Each round: 1e4, then 2e5, each settle 1500 steps + 3 timed phases of 1e8 particle-steps
+# (9633 steps at 1e4, 499 at 2e5: both sizes' phases last about as long), about 4 min per
+# round on one core. Prints one line per round and the median ratio.
 set -euo pipefail
 rounds=${1:-3}
 threads=${2:-1}
@@ -20,12 +21,14 @@ speed() {  # particle-steps/s of the centrec row of a results.csv
 
 ratios=()
 for r in $(seq "$rounds"); do
-  "$bench" --no-liggghts --sizes 10000 --threads "$threads" --steps 2000 --settle 1500 --repeats 3 --out "$out/small" >/dev/null
-  "$bench" --no-liggghts --sizes 200000 --threads "$threads" --steps 500 --settle 1500 --repeats 3 --out "$out/large" >/dev/null
+  "$bench" --no-liggghts --sizes 10000 --threads "$threads" --phase-particle-steps 1e8 --settle 1500 --repeats 3 --out "$out/small" >/dev/null
+  "$bench" --no-liggghts --sizes 200000 --threads "$threads" --phase-particle-steps 1e8 --settle 1500 --repeats 3 --out "$out/large" >/dev/null
   small=$(speed "$out/small")
   large=$(speed "$out/large")
   ratio=$(awk -v a="$small" -v b="$large" 'BEGIN { printf "%.3f", a / b }')
   ratios+=("$ratio")
   echo "round $r: 1e4 $small, 2e5 $large particle-steps/s, cost per particle 2e5 / 1e4 = $ratio"
 done
-printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { printf "median cost ratio over %d rounds: %s\n", NR, a[int((NR + 1) / 2)] }'
+printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END {
+  m = NR % 2 ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2
+  printf "median cost ratio over %d rounds: %.3f\n", NR, m }'
