@@ -190,9 +190,9 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
     // four alternating rounds; tests/bench/README.md).
     for (long j = b * kBlock; j < j_end; ++j) {
       if (const long q = j + kGatherAhead; q < n) {
-        const char* s0 = reinterpret_cast<const char*>(share + rev_start[q]);
-        const char* s1 = reinterpret_cast<const char*>(share + rev_start[q + 1]);
-        for (const char* s = s0; s < s1; s += 64) __builtin_prefetch(s);
+        const char* group = reinterpret_cast<const char*>(share + rev_start[q]);
+        const std::size_t bytes = (rev_start[q + 1] - rev_start[q]) * sizeof(Impl::PartnerShare);
+        for (std::size_t off = 0; off < bytes; off += 64) __builtin_prefetch(group + off);
         __builtin_prefetch(F_ + q);
         __builtin_prefetch(T_ + q);
       }
