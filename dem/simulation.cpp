@@ -326,6 +326,7 @@ void Simulation::rebuild() {
       if (wall_candidate(walls_[w], x_[i], r_[i], im.skin)) mask |= 1u << w;
     im.wall_mask[i] = mask;
   }
+  im.gather_fetch_ahead = memory_bytes() > kGatherFetchAheadBytes;
   ++im.rebuilds;
   dirty_ = false;
 }

@@ -19,6 +19,10 @@ const char* kHelp =
     "  --steps S            steps per timed phase (default 1000)\n"
     "  --phase-particle-steps P  every size's timed phase does P particle-steps: steps =\n"
     "                       round(P / N), overrides --steps (equal work, equal duration per phase)\n"
+    "  --replay-particle-steps P  every size times the same window (--repeats phases of --steps\n"
+    "                       after the settle); a film of N particles replays that window from its\n"
+    "                       settled state round(P / (N x steps x repeats)) times (at least once),\n"
+    "                       so all sizes do about P timed particle-steps in the same film state\n"
     "  --settle S           untimed settle steps before timing (default 2000)\n"
     "  --repeats R          timed phases per run; the median is reported (default 3)\n"
     "  --repeats-per-size R,R,..  one repeat count per size (overrides --repeats)\n"
@@ -61,6 +65,16 @@ long timed_steps_for(const BenchOptions& o, long n) {
   return std::max(1L, std::lround(o.phase_particle_steps / static_cast<double>(n)));
 }
 
+int repeats_of(const BenchOptions& o, std::size_t si) {
+  return o.repeats_per_size.empty() ? o.repeats : o.repeats_per_size.at(si);
+}
+
+int replays_for(const BenchOptions& o, long n, std::size_t si) {
+  if (o.replay_particle_steps <= 0.0 || n <= 0) return 1;
+  const double window = static_cast<double>(n) * static_cast<double>(timed_steps_for(o, n)) * repeats_of(o, si);
+  return static_cast<int>(std::max(1L, std::lround(o.replay_particle_steps / window)));
+}
+
 BenchOptions parse_bench_options(int argc, char** argv) {
   BenchOptions o;
   for (int i = 1; i < argc; ++i) {
@@ -76,6 +90,7 @@ BenchOptions parse_bench_options(int argc, char** argv) {
     else if (a == "--threads") o.threads = parse_list<int>(a, value());
     else if (a == "--steps") o.steps = static_cast<long>(parse_positive(a, value()));
     else if (a == "--phase-particle-steps") o.phase_particle_steps = parse_positive(a, value());
+    else if (a == "--replay-particle-steps") o.replay_particle_steps = parse_positive(a, value());
     else if (a == "--settle") o.settle_steps = static_cast<long>(parse_positive(a, value()));
     else if (a == "--repeats") o.repeats = static_cast<int>(parse_positive(a, value()));
     else if (a == "--repeats-per-size") o.repeats_per_size = parse_list<int>(a, value());
@@ -92,6 +107,9 @@ BenchOptions parse_bench_options(int argc, char** argv) {
   }
   if (!o.repeats_per_size.empty() && o.repeats_per_size.size() != o.sizes.size())
     throw std::invalid_argument("--repeats-per-size needs one value per size");
+  if (o.replay_particle_steps > 0 && o.phase_particle_steps > 0)
+    throw std::invalid_argument("--replay-particle-steps and --phase-particle-steps exclude each other (same window "
+                                "for every size, or same work per phase)");
   if (!o.liggghts && !o.centrec) throw std::invalid_argument("--no-liggghts and --no-centrec: nothing to run");
   return o;
 }

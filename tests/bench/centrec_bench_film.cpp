@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "tests/bench/bench_options.hpp"
@@ -37,12 +38,17 @@ void print_result(const EngineResult& r) {
 }
 
 std::string preamble(const FilmCase& c, const BenchOptions& o) {
-  char phase[128];
+  char phase[256];
   if (o.phase_particle_steps > 0)
     std::snprintf(phase, sizeof phase, "%.3g particle-steps (steps = that / N, see the csv)", o.phase_particle_steps);
+  else if (o.replay_particle_steps > 0)
+    std::snprintf(phase, sizeof phase,
+                  "%ld steps at every N (the same film window); centrec replays the window from the settled "
+                  "state until it has timed about %.3g particle-steps (phases per N in the csv)",
+                  o.steps, o.replay_particle_steps);
   else
     std::snprintf(phase, sizeof phase, "%ld steps", o.steps);
-  char b[1024];
+  char b[2048];
   const std::time_t now = std::time(nullptr);
   char when[64];
   std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
@@ -60,10 +66,6 @@ std::string preamble(const FilmCase& c, const BenchOptions& o) {
   return b;
 }
 
-int repeats_of(const BenchOptions& o, std::size_t size_index) {
-  return o.repeats_per_size.empty() ? o.repeats : o.repeats_per_size[size_index];
-}
-
 CentrecRunSettings centrec_settings(const BenchOptions& o, int threads, std::size_t size_index, long particles) {
   CentrecRunSettings cr;
   cr.threads = threads;
@@ -71,6 +73,7 @@ CentrecRunSettings centrec_settings(const BenchOptions& o, int threads, std::siz
   cr.settle_steps = o.settle_steps;
   cr.timed_steps = timed_steps_for(o, particles);
   cr.repeats = repeats_of(o, size_index);
+  cr.replays = replays_for(o, particles, size_index);
   return cr;
 }
 
@@ -145,14 +148,18 @@ int main(int argc, char** argv) {
     if (o.centrec && o.interleave) {
       for (std::size_t ti = 0; ti < o.threads.size(); ++ti) {
         std::vector<std::unique_ptr<CentrecFilmRun>> runs;
-        int most = 0;
+        // Each size's phases spread evenly over the run: phase k of a size with K phases
+        // in all goes at (k + 1/2) / K of the way (a stable order keeps ties by size).
+        std::vector<std::pair<double, std::size_t>> schedule;
         for (std::size_t si = 0; si < states.size(); ++si) {
-          runs.push_back(std::make_unique<CentrecFilmRun>(c, states[si], centrec_settings(o, o.threads[ti], si, static_cast<long>(states[si].particles.size()))));
-          most = std::max(most, repeats_of(o, si));
+          const CentrecRunSettings cr = centrec_settings(o, o.threads[ti], si, static_cast<long>(states[si].particles.size()));
+          runs.push_back(std::make_unique<CentrecFilmRun>(c, states[si], cr));
+          const int phases = cr.replays * cr.repeats;
+          for (int k = 0; k < phases; ++k) schedule.emplace_back((k + 0.5) / phases, si);
         }
-        for (int k = 0; k < most; ++k)
-          for (std::size_t si = 0; si < states.size(); ++si)
-            if (k < repeats_of(o, si)) runs[si]->time_phase();
+        std::stable_sort(schedule.begin(), schedule.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (const auto& [when, si] : schedule) runs[si]->time_phase();
         for (std::size_t si = 0; si < states.size(); ++si) {
           BenchRow& row = rows[si * o.threads.size() + ti];
           row.centrec = runs[si]->finish();

@@ -14,7 +14,8 @@ struct CentrecRunSettings {
   double skin_fraction = 0.4;  // Verlet skin / d
   long settle_steps = 2000;
   long timed_steps = 1000;
-  int repeats = 3;             // consecutive timed phases
+  int repeats = 3;             // consecutive timed phases: one window
+  int replays = 1;             // windows, each from the post-settle state (bit for bit the same run)
 };
 
 // One centrec film: built and settled on construction, then timed one phase at a time, so
@@ -26,7 +27,9 @@ class CentrecFilmRun {
   ~CentrecFilmRun();
   CentrecFilmRun(const CentrecFilmRun&) = delete;
   CentrecFilmRun& operator=(const CentrecFilmRun&) = delete;
-  void time_phase();      // one timed phase of r.timed_steps (no-op after a failure)
+  // One timed phase of r.timed_steps (no-op after a failure). After the window's last
+  // phase, the next call first rewinds (untimed) to the post-settle state.
+  void time_phase();
   EngineResult finish();  // final state and statistics
 
  private:
@@ -34,7 +37,7 @@ class CentrecFilmRun {
   std::unique_ptr<State> st_;
 };
 
-// Settle and r.repeats consecutive timed phases.
+// Settle and r.replays windows of r.repeats consecutive timed phases.
 EngineResult run_centrec(const FilmCase& c, const FilmState& s, const CentrecRunSettings& r);
 
 }  // namespace centrec::bench
