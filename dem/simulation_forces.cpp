@@ -176,65 +176,59 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   const Vec3 *F_ = f_.data(), *T_ = t_.data();
   const double *IM = inv_m_.data(), *II = inv_inertia_.data();
   // In a film larger than the cache every one of the gather's eleven streams comes from
-  // memory and restarts at each block, which the hardware prefetchers ramp up to too late:
-  // with fetch_ahead, the shares and f, t are fetched kGatherAhead particles ahead, and the
-  // block's kick and drift data while its gather runs (2e5 particles, 1 thread: +5 to +13 %
-  // per step in four alternating rounds; tests/bench/README.md). One prefetch per array and
-  // particle: asking for each line once, in a burst at the block's start, was 5 % slower.
+  // memory, which the hardware prefetchers ramp up to too late at each block: with
+  // fetch_ahead, particle j + kGatherAhead's shares and data are fetched at j.
   const bool fetch_ahead = im.gather_fetch_ahead;
-  auto gather_block = [&](long j0, long j_end, BlockTally& tally, auto fetch) {
+  // Gather, second half kick and next first half of each particle of block [j0, j_end) in
+  // one go (its data are read once); returns the block's largest squared displacement.
+  // Entries not in contact hold zeros: adding +0.0 leaves every sum bit for bit as skipping
+  // it did, because a sum that starts at +0.0 (F, T and f_, t_ of pass 1) can never be -0.0
+  // in round-to-nearest.
+  auto sweep_block = [&](long j0, long j_end, BlockTally& tally, auto fetch) {
+    double block_d2 = 0.0;
     for (long j = j0; j < j_end; ++j) {
       if constexpr (decltype(fetch)::value) {
         if (const long q = j + kGatherAhead; q < n) {
           const char* group = reinterpret_cast<const char*>(share + rev_start[q]);
           const std::size_t bytes = (rev_start[q + 1] - rev_start[q]) * sizeof(Impl::PartnerShare);
           for (std::size_t off = 0; off < bytes; off += 64) __builtin_prefetch(group + off);
-          __builtin_prefetch(F_ + q);
-          __builtin_prefetch(T_ + q);
+          __builtin_prefetch(F_ + q, 1);
+          __builtin_prefetch(T_ + q, 1);
+          __builtin_prefetch(V + q, 1);
+          __builtin_prefetch(Wv + q, 1);
+          __builtin_prefetch(X + q, 1);
+          __builtin_prefetch(XB + q);
+          __builtin_prefetch(IM + q);
+          __builtin_prefetch(II + q);
         }
-        __builtin_prefetch(V + j, 1);
-        __builtin_prefetch(Wv + j, 1);
-        __builtin_prefetch(X + j, 1);
-        __builtin_prefetch(XB + j);
-        __builtin_prefetch(IM + j);
-        __builtin_prefetch(II + j);
       }
-      if (MOT[j] != Motion::free) continue;
-      Vec3 F = f_[j], T = t_[j];
-      for (std::uint32_t k = rev_start[j]; k < rev_start[j + 1]; ++k) {
-        F += share[k].force;
-        T += share[k].torque;
+      if (MOT[j] == Motion::free) {
+        Vec3 F = f_[j], T = t_[j];
+        for (std::uint32_t k = rev_start[j]; k < rev_start[j + 1]; ++k) {
+          F += share[k].force;
+          T += share[k].torque;
+        }
+        f_[j] = F;
+        t_[j] = T;
+        if ((!is_finite(F) || !is_finite(T) || !is_finite(X[j])) && tally.blowup_index < 0) {
+          tally.blowup_index = j;
+          tally.blowup_x = X[j];
+          tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
+        }
+        if (kick) half_kick(half, inv_m_[j], inv_inertia_[j], F, T, v_[j], w_[j]);  // integrate_second_half
       }
-      f_[j] = F;
-      t_[j] = T;
-      if ((!is_finite(F) || !is_finite(T) || !is_finite(X[j])) && tally.blowup_index < 0) {
-        tally.blowup_index = j;
-        tally.blowup_x = X[j];
-        tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
-      }
+      if (next)
+        block_d2 = std::max(block_d2, first.advance(MOT[j], inv_m_[j], inv_inertia_[j], f_[j], t_[j], XB[j], x_[j], v_[j], w_[j]));
     }
+    return block_d2;
   };
   double max_d2 = 0.0;
 #pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles) reduction(max : max_d2)
   for (long b = 0; b < nblocks; ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
-    const long j_end = std::min(n, (b + 1) * kBlock);
-    // The gather of the whole block first (one sequential read of the parked shares), then
-    // the block's kicks and drifts on data now in cache. Entries not in contact hold zeros:
-    // adding +0.0 leaves every sum bit for bit as skipping it did, because a sum that
-    // starts at +0.0 (F, T and f_, t_ of pass 1) can never be -0.0 in round-to-nearest.
-    const long j0 = b * kBlock;
-    if (fetch_ahead)
-      gather_block(j0, j_end, tally, std::true_type{});
-    else
-      gather_block(j0, j_end, tally, std::false_type{});
-    if (kick)  // integrate_second_half, as a sweep of its own would do it
-      for (long j = b * kBlock; j < j_end; ++j) {
-        if (MOT[j] == Motion::free) half_kick(half, inv_m_[j], inv_inertia_[j], f_[j], t_[j], v_[j], w_[j]);
-      }
-    if (next)
-      for (long j = b * kBlock; j < j_end; ++j)
-        max_d2 = std::max(max_d2, first.advance(MOT[j], inv_m_[j], inv_inertia_[j], f_[j], t_[j], XB[j], x_[j], v_[j], w_[j]));
+    const long j0 = b * kBlock, j_end = std::min(n, (b + 1) * kBlock);
+    max_d2 = std::max(max_d2, fetch_ahead ? sweep_block(j0, j_end, tally, std::true_type{})
+                                          : sweep_block(j0, j_end, tally, std::false_type{}));
   }
   // Fixed-order reduction over blocks.
   for (auto& f : wall_force_) f = {};
