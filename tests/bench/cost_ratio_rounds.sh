@@ -3,9 +3,10 @@
 # alternate the two sizes (centrec only), so that a slow spell of this shared machine hits
 # both sizes of a round instead of one size of a whole benchmark run.
 #   tests/bench/cost_ratio_rounds.sh [ROUNDS] [THREADS]      (defaults 3 rounds, 1 thread)
-# Each round: 1e4, then 2e5, each settle 1500 steps + 3 timed phases of 1e8 particle-steps
-# (9633 steps at 1e4, 499 at 2e5: both sizes' phases last about as long), about 4 min per
-# round on one core. Prints one line per round and the median ratio.
+# Each round: 1e4, then 2e5, each settle 1500 steps, then the same film window of 3 x 500
+# steps (equal film state at both sizes); the 1e4 film replays that window from its settled
+# state 19 times (--replay-particle-steps 3e8), so both sizes time about 3e8 particle-steps.
+# About 3 min per round on one core. Prints one line per round and the median ratio.
 set -euo pipefail
 rounds=${1:-3}
 threads=${2:-1}
@@ -21,8 +22,8 @@ speed() {  # particle-steps/s of the centrec row of a results.csv
 
 ratios=()
 for r in $(seq "$rounds"); do
-  "$bench" --no-liggghts --sizes 10000 --threads "$threads" --phase-particle-steps 1e8 --settle 1500 --repeats 3 --out "$out/small" >/dev/null
-  "$bench" --no-liggghts --sizes 200000 --threads "$threads" --phase-particle-steps 1e8 --settle 1500 --repeats 3 --out "$out/large" >/dev/null
+  "$bench" --no-liggghts --sizes 10000 --threads "$threads" --steps 500 --repeats 3 --replay-particle-steps 3e8 --settle 1500 --out "$out/small" >/dev/null
+  "$bench" --no-liggghts --sizes 200000 --threads "$threads" --steps 500 --repeats 3 --replay-particle-steps 3e8 --settle 1500 --out "$out/large" >/dev/null
   small=$(speed "$out/small")
   large=$(speed "$out/large")
   ratio=$(awk -v a="$small" -v b="$large" 'BEGIN { printf "%.3f", a / b }')
