@@ -176,8 +176,9 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   const Vec3 *F_ = f_.data(), *T_ = t_.data();
   const double *IM = inv_m_.data(), *II = inv_inertia_.data();
   // In a film larger than the cache every one of the gather's eleven streams comes from
-  // memory, which the hardware prefetchers ramp up to too late at each block: with
-  // fetch_ahead, particle j + kGatherAhead's shares and data are fetched at j.
+  // memory, more than the hardware prefetchers keep ahead of: with fetch_ahead (set at the
+  // rebuild above a state size, kGatherFetchAheadBytes), particle j + kGatherAhead's shares
+  // and data are fetched at j.
   const bool fetch_ahead = im.gather_fetch_ahead;
   // Gather, second half kick and next first half of each particle of block [j0, j_end) in
   // one go (its data are read once); returns the block's largest squared displacement.
