@@ -55,8 +55,7 @@ struct CentrecFilmRun::State {
   CentrecRunSettings r;
   EngineResult res;
   std::unique_ptr<dem::Simulation> sim;
-  std::size_t rebuilds0 = 0;
-  std::size_t rebuilds_timed = 0;  // rebuilds of the finished windows
+  std::size_t rebuilds_timed = 0;  // list rebuilds inside the timed phases
   int phase_in_window = 0;
   dem::SimulationState settled;    // start of every window (only kept if r.replays > 1)
   void fail(const std::exception& e) {  // keeps what was timed; later phases do nothing
@@ -104,7 +103,6 @@ CentrecFilmRun::CentrecFilmRun(const FilmCase& c, const FilmState& s, const Cent
     // every replay does after import_state, which ends with the same rebuild.
     sim.rebuild_lists();
     if (r.replays > 1) st_->settled = sim.export_state();
-    st_->rebuilds0 = sim.neighbour_stats().rebuilds;
   } catch (const std::exception& e) {
     st_->fail(e);
   }
@@ -116,14 +114,14 @@ void CentrecFilmRun::time_phase() {
   if (!st_->sim) return;
   try {
     if (st_->phase_in_window == st_->r.repeats) {
-      st_->rebuilds_timed += st_->sim->neighbour_stats().rebuilds - st_->rebuilds0;
       st_->sim->import_state(st_->settled);
-      st_->rebuilds0 = st_->sim->neighbour_stats().rebuilds;
       st_->phase_in_window = 0;
     }
+    const std::size_t rebuilds = st_->sim->neighbour_stats().rebuilds;
     const auto t0 = std::chrono::steady_clock::now();
     st_->sim->step(st_->r.timed_steps);
     const auto t1 = std::chrono::steady_clock::now();
+    st_->rebuilds_timed += st_->sim->neighbour_stats().rebuilds - rebuilds;
     st_->res.seconds.push_back(std::chrono::duration<double>(t1 - t0).count());
     ++st_->phase_in_window;
   } catch (const std::exception& e) {
@@ -140,7 +138,7 @@ EngineResult CentrecFilmRun::finish() {
   // NeighbourStats::list_entries holds each pair once (half list), as LIGGGHTS' count.
   res.list_pairs_per_particle = static_cast<double>(ns.list_entries) / res.particles;
   res.rebuilds_per_phase =
-      static_cast<double>(st_->rebuilds_timed + ns.rebuilds - st_->rebuilds0) / static_cast<double>(res.seconds.size());
+      static_cast<double>(st_->rebuilds_timed) / static_cast<double>(res.seconds.size());
   res.ok = res.final.atoms == res.particles;
   if (!res.ok) res.note = "centrec lost particles";
   return res;
