@@ -2,9 +2,9 @@
 // The first half of a velocity-Verlet step for one particle (LIGGGHTS nve/sphere initial
 // integrate): half kick and drift of a free particle, or the exact rotation of one glued
 // to the drum; then its squared displacement since the last neighbour-list build. Used by
-// Simulation::integrate_first_half and by the gather pass of the force computation, which
-// runs it right after the previous step's second half kick while the particle's data are
-// in cache (one sweep over the particle arrays per step instead of three).
+// Simulation::integrate_first_half and by the force pass, which runs it right after the
+// previous step's second half kick while the particle's data are in cache (one sweep over
+// the particle arrays per step instead of three).
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -2,9 +2,9 @@
 // Cell grid, spatial sort and half Verlet neighbour lists with contact history
 // (DESIGN.md section 3). Pair (i, j), i < j by index, is stored once, in row i, with its
 // history; the reverse index (rev_start/rev_pos) numbers the entries naming each j, grouped
-// by j in increasing entry order, so forces on j can be parked in that order and gathered
-// in a fixed order (bitwise determinism for any thread count) instead of scattered with
-// atomics, reading the parked values as one sequential stream.
+// by j in increasing entry order, so the force pass can park the shares on a j named by
+// another thread's rows in that order and sum them in a fixed order (partner_routing.hpp:
+// bitwise determinism for any thread count, no atomics).
 // History is kept in the pair's canonical orientation (lower particle id = "i" of the
 // contact law), so re-sorting never flips it.
 #include <cstdint>

@@ -311,7 +311,10 @@ void Simulation::rebuild() {
   build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.pz, carried, threads_);
   im.touch.resize(im.list.nbr.size());
   for (std::size_t e = 0; e < im.touch.size(); ++e) im.touch[e] = !is_zero(im.list.hist[e]);
-  im.share.assign(im.list.nbr.size(), Impl::PartnerShare{});
+  im.routing = PartnerRouting{};  // planned by the next force pass, for its thread count
+  im.share.clear();
+  im.acc_f.assign(x_.size(), Vec3{});
+  im.acc_t.assign(x_.size(), Vec3{});
   im.carried = NeighbourList{};
 
   const std::size_t n = x_.size();
@@ -326,7 +329,6 @@ void Simulation::rebuild() {
       if (wall_candidate(walls_[w], x_[i], r_[i], im.skin)) mask |= 1u << w;
     im.wall_mask[i] = mask;
   }
-  im.gather_fetch_ahead = memory_bytes() > kGatherFetchAheadBytes;
   ++im.rebuilds;
   dirty_ = false;
 }
@@ -395,12 +397,12 @@ double Simulation::integrate_first_half() {
 
 void Simulation::step(std::int64_t nsteps) {
   if (!ready_) setup();
-  // Within one call the gather pass of step s also does the first half of step s + 1
+  // Within one call the force pass of step s also does the first half of step s + 1
   // (same operations in the same order as separate sweeps: results are unchanged); the
   // last step of the call ends with the second half kick, so between calls the state is
   // the usual end-of-step state. dirty_ changes only between calls.
   double max_d2 = 0.0;
-  bool started = false;  // this step's first half already done by the previous gather pass
+  bool started = false;  // this step's first half already done by the previous force pass
   for (std::int64_t s = 0; s < nsteps; ++s) {
     if (dirty_) rebuild();
     if (!started) max_d2 = integrate_first_half();
@@ -430,7 +432,8 @@ std::size_t Simulation::memory_bytes() const {
                   bytes_of(r_) + bytes_of(m_) + bytes_of(inv_m_) + bytes_of(inv_inertia_) + bytes_of(mat_) +
                   bytes_of(motion_);
   b += im.list.bytes() + im.carried.bytes() + bytes_of(im.x_build) + bytes_of(im.wall_hist) + bytes_of(im.wall_mask) +
-       bytes_of(im.touch) + bytes_of(im.share) +
+       bytes_of(im.touch) + bytes_of(im.share) + bytes_of(im.routing.slot) + bytes_of(im.routing.park_start) +
+       bytes_of(im.acc_f) + bytes_of(im.acc_t) +
        bytes_of(im.grid.cell_start);
   for (const auto& t : im.tallies) b += sizeof(BlockTally) + bytes_of(t.wall_force);
   return b;

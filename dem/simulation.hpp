@@ -10,8 +10,10 @@
 //
 // Determinism: forces use a half neighbour list; each pair is evaluated once (Newton's
 // third law holds exactly) in a canonical operand order (lower id first). The row owner's
-// share is summed directly and the partner's share is gathered in a second pass in a fixed
-// order (a reverse index), so each thread writes only its own particles. Per-wall force
+// share is summed directly; the shares on each partner are summed in row order, added
+// straight into the partner's accumulator by the thread that owns it, or parked and summed
+// after the pass when the partner is named by another thread's rows (partner_routing.hpp),
+// so each thread writes only its own particles. Per-wall force
 // totals are summed over fixed blocks of particles in a fixed order. Results are therefore
 // bitwise identical for any thread count (tests/dem/test_thread_determinism.cpp).
 #include <cstddef>
@@ -167,9 +169,10 @@ class Simulation {
   struct Impl;  // neighbour lists, histories, scratch
   void rebuild();
   void resolve_time_step();  // dt_ and the blow-up limit from the advice (setup's first half)
-  // What the gather pass of compute_forces does to each particle once its force and torque
-  // are complete: nothing (set-up), the second half kick (last step of a step() call), or
-  // that kick and then the next step's first half (kick, drift), saving two sweeps.
+  // What compute_forces does to each particle once its force and torque are complete (at
+  // the end of its row, or after the pass if it has parked shares): nothing (set-up), the
+  // second half kick (last step of a step() call), or that kick and then the next step's
+  // first half (kick, drift), saving two sweeps.
   enum class AfterForces : std::uint8_t { nothing, second_half, second_and_next_first_half };
   // Returns the largest squared displacement since the last build after the next step's
   // first half (AfterForces::second_and_next_first_half), else 0.
@@ -180,7 +183,7 @@ class Simulation {
   void invalidate_list();  // particles or walls changed: carry contacts, rebuild before the next step
   void permute_particles(const std::vector<std::int32_t>& order);
   void update_pair_constants();
-  // x: the particle's position when the blow-up was detected (the gather pass may have moved it since).
+  // x: the particle's position when the blow-up was detected (the force pass may have moved it since).
   [[noreturn]] void report_blow_up(std::size_t i, Vec3 x, double overlap, const std::string& partner) const;
   PairConstants const& pair(int a, int b) const { return pc_[static_cast<std::size_t>(a) * n_mat_ + b]; }
 

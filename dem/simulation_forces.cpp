@@ -1,10 +1,9 @@
 // The force pass of Simulation (DESIGN.md section 3): Hertz-Mindlin-EPSD2 for every
-// pair of the half neighbour list and every candidate wall, gathered deterministically.
+// pair of the half neighbour list and every candidate wall, summed deterministically.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
-#include <type_traits>
 
 #include "dem/contact_law.hpp"
 #include "dem/first_half_step.hpp"
@@ -14,8 +13,35 @@ namespace centrec::dem {
 
 // Rows beyond the list's reach at which the force pass fetches partner data ahead.
 constexpr long kPrefetchMargin = 256;
-// Particles ahead at which the gather pass fetches the parked shares and f, t.
-constexpr long kGatherAhead = 16;
+
+namespace {
+
+// What follows a particle's completed force and torque (see Simulation::AfterForces): the
+// blow-up check, the second half kick, the next step's first half. Returns the squared
+// displacement since the last build (0 without the first half).
+struct ParticleFinish {
+  bool kick = false, next = false;
+  double half = 0.0;
+  FirstHalfStep first;
+  const Motion* mot = nullptr;
+  const double *inv_m = nullptr, *inv_inertia = nullptr;
+  const Vec3* x_build = nullptr;
+  Vec3 *x = nullptr, *v = nullptr, *w = nullptr;
+
+  double operator()(long i, Vec3 f, Vec3 t, BlockTally& tally) const {
+    if (mot[i] == Motion::free) {
+      if ((!is_finite(f) || !is_finite(t) || !is_finite(x[i])) && tally.blowup_index < 0) {
+        tally.blowup_index = i;
+        tally.blowup_x = x[i];
+        tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
+      }
+      if (kick) half_kick(half, inv_m[i], inv_inertia[i], f, t, v[i], w[i]);  // integrate_second_half
+    }
+    return next ? first.advance(mot[i], inv_m[i], inv_inertia[i], f, t, x_build[i], x[i], v[i], w[i]) : 0.0;
+  }
+};
+
+}  // namespace
 
 double Simulation::compute_forces(bool update_history, AfterForces after) {
   Impl& im = *impl_;
@@ -33,8 +59,15 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   ContactHistory* hist = im.list.hist.data();
   ContactHistory* whist = im.wall_hist.data();
   std::uint8_t* touch = im.touch.data();
+  // Row ranges of the pair pass: one per thread (results do not depend on their number).
+  const long parts = n >= kMinParallelParticles ? std::max(1, threads_) : 1;
+  if (im.routing.parts != parts) {
+    im.routing = route_partner_shares(im.list, kBlock, parts);
+    im.share.assign(im.routing.parked(), Impl::PartnerShare{});
+  }
   Impl::PartnerShare* share = im.share.data();
-  const std::uint32_t* rev_pos = im.list.rev_pos.data();
+  const std::uint32_t* slot = im.routing.slot.data();
+  Vec3 *ACC_F = im.acc_f.data(), *ACC_T = im.acc_t.data();
   const Vec3 *X = x_.data(), *V = v_.data(), *Wv = w_.data();
   const double *R = r_.data(), *M = m_.data();
   const std::int64_t* ID = id_.data();
@@ -46,11 +79,31 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   // first read. Fetching particle i + ahead at row i turns those reads into cache hits.
   const long ahead = im.list.reach + kPrefetchMargin;
 
+  ParticleFinish finish;
+  finish.kick = after != AfterForces::nothing;
+  finish.next = after == AfterForces::second_and_next_first_half;
+  finish.half = 0.5 * dt;
+  if (finish.next) finish.first = begin_first_half();
+  finish.mot = MOT;
+  finish.inv_m = inv_m_.data();
+  finish.inv_inertia = inv_inertia_.data();
+  finish.x_build = im.x_build.data();
+  finish.x = x_.data();
+  finish.v = v_.data();
+  finish.w = w_.data();
+  const std::uint32_t* park_start = im.routing.park_start.data();
+
   // Pass 1: each pair once, in the row of its lower index. The row owner's share is summed
-  // at once; the partner's share is parked for pass 2 at the entry's reverse position.
-#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles)
-  for (long b = 0; b < nblocks; ++b) {
+  // at once; the partner's share is added to its accumulator or parked (im.routing). Rows
+  // name only partners of higher index, so at the end of its row a particle with direct
+  // shares only has its whole force and no later row reads it: it is finished there, while
+  // its data are in cache (one sweep over the particle arrays per step).
+  double max_d2 = 0.0;
+#pragma omp parallel for schedule(static, 1) num_threads(threads_) if (parts > 1) reduction(max : max_d2)
+  for (long part = 0; part < parts; ++part)
+  for (long b = first_block_of_part(nblocks, parts, part); b < first_block_of_part(nblocks, parts, part + 1); ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+    double block_d2 = 0.0;
     tally.wall_force.assign(nw, Vec3{});
     tally.pair_contacts = tally.wall_contacts = 0;
     tally.blowup_index = -1;
@@ -79,7 +132,7 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
           if (touch[e]) {  // just separated: forget the pair (reads 1 byte, not the history)
             touch[e] = 0;
             hist[e] = ContactHistory{};
-            share[rev_pos[e]] = Impl::PartnerShare{};
+            if (slot[e] != PartnerRouting::kDirect) share[slot[e]] = Impl::PartnerShare{};
           }
           continue;
         }
@@ -108,21 +161,36 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
                               arm_c};
         const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
         if (update_history) hist[e] = res.history;
+        Vec3 fj, tj;
         if (i_first) {
           F += res.force;
           T += res.torque_i;
-          share[rev_pos[e]] = {-res.force, res.torque_j};
+          fj = -res.force;
+          tj = res.torque_j;
         } else {
           F -= res.force;
           T += res.torque_j;
-          share[rev_pos[e]] = {res.force, res.torque_i};
+          fj = res.force;
+          tj = res.torque_i;
+        }
+        if (const std::uint32_t s = slot[e]; s == PartnerRouting::kDirect) {
+          ACC_F[j] += fj;
+          ACC_T[j] += tj;
+        } else {
+          share[s] = {fj, tj};
         }
         touch[e] = 1;
         ++tally.pair_contacts;
       }
+      // The partners' direct shares, summed in row order, come first (partner_routing.hpp).
+      const Vec3 acc_f = ACC_F[i], acc_t = ACC_T[i];
+      ACC_F[i] = {};
+      ACC_T[i] = {};
+      const bool direct = park_start[i] == park_start[i + 1];
       if (MOT[i] != Motion::free) {  // carried by the drum: forces on it are not needed
         f_[i] = {};
         t_[i] = {};
+        if (direct) block_d2 = std::max(block_d2, finish(i, Vec3{}, Vec3{}, tally));
         continue;
       }
       std::uint32_t mask = im.wall_mask[i];
@@ -160,76 +228,38 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
         tally.wall_force[static_cast<std::size_t>(wi)] -= res.force;
         ++tally.wall_contacts;
       }
-      f_[i] = F + M[i] * g;
-      t_[i] = T;
+      const Vec3 f = acc_f + (F + M[i] * g), t = acc_t + T;
+      f_[i] = f;
+      t_[i] = t;
+      if (direct) block_d2 = std::max(block_d2, finish(i, f, t, tally));
     }
+    max_d2 = std::max(max_d2, block_d2);
   }
-  // Pass 2: gather the parked partner shares in the fixed reverse-index order, then (see
-  // AfterForces) the second half kick and the next step's first half of the same particle.
-  const std::uint32_t* rev_start = im.list.rev_start.data();
-  const bool kick = after != AfterForces::nothing;
-  const bool next = after == AfterForces::second_and_next_first_half;
-  FirstHalfStep first;
-  if (next) first = begin_first_half();
-  const double half = 0.5 * dt;
-  const Vec3* XB = im.x_build.data();
-  const Vec3 *F_ = f_.data(), *T_ = t_.data();
-  const double *IM = inv_m_.data(), *II = inv_inertia_.data();
-  // In a film larger than the cache every one of the gather's eleven streams comes from
-  // memory, more than the hardware prefetchers keep ahead of: with fetch_ahead (set at the
-  // rebuild above a state size, kGatherFetchAheadBytes), particle j + kGatherAhead's shares
-  // and data are fetched at j.
-  const bool fetch_ahead = im.gather_fetch_ahead;
-  // Gather, second half kick and next first half of each particle of block [j0, j_end) in
-  // one go (its data are read once); returns the block's largest squared displacement.
-  // Entries not in contact hold zeros: adding +0.0 leaves every sum bit for bit as skipping
-  // it did, because a sum that starts at +0.0 (F, T and f_, t_ of pass 1) can never be -0.0
-  // in round-to-nearest.
-  auto sweep_block = [&](long j0, long j_end, BlockTally& tally, auto fetch) {
-    double block_d2 = 0.0;
-    for (long j = j0; j < j_end; ++j) {
-      if constexpr (decltype(fetch)::value) {
-        if (const long q = j + kGatherAhead; q < n) {
-          const char* group = reinterpret_cast<const char*>(share + rev_start[q]);
-          const std::size_t bytes = (rev_start[q + 1] - rev_start[q]) * sizeof(Impl::PartnerShare);
-          for (std::size_t off = 0; off < bytes; off += 64) __builtin_prefetch(group + off);
-          __builtin_prefetch(F_ + q, 1);
-          __builtin_prefetch(T_ + q, 1);
-          __builtin_prefetch(V + q, 1);
-          __builtin_prefetch(Wv + q, 1);
-          __builtin_prefetch(X + q, 1);
-          __builtin_prefetch(XB + q);
-          __builtin_prefetch(IM + q);
-          __builtin_prefetch(II + q);
+  // Pass 2: the parked particles, once every range is done: their shares summed in row
+  // order, then their own part, as the direct ones (partner_routing.hpp); then finished.
+  // Parked slots not in contact hold zeros: adding +0.0 leaves a sum bit for bit as
+  // skipping it does (the direct sums skip them), because a sum that starts at +0.0 can
+  // never be -0.0 in round-to-nearest; for the same reason a parked particle's own part,
+  // +0.0 + (F + m g) in pass 1, adds as the direct one's F + m g does.
+  if (im.routing.parked() > 0) {
+#pragma omp parallel for schedule(static) num_threads(threads_) if (parts > 1) reduction(max : max_d2)
+    for (long b = 0; b < nblocks; ++b) {
+      BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+      const long j_end = std::min(n, (b + 1) * kBlock);
+      for (long j = b * kBlock; j < j_end; ++j) {
+        if (park_start[j] == park_start[j + 1]) continue;
+        if (MOT[j] == Motion::free) {
+          Vec3 sf{}, st{};
+          for (std::uint32_t k = park_start[j]; k < park_start[j + 1]; ++k) {
+            sf += share[k].force;
+            st += share[k].torque;
+          }
+          f_[j] = sf + f_[j];
+          t_[j] = st + t_[j];
         }
+        max_d2 = std::max(max_d2, finish(j, f_[j], t_[j], tally));
       }
-      if (MOT[j] == Motion::free) {
-        Vec3 F = f_[j], T = t_[j];
-        for (std::uint32_t k = rev_start[j]; k < rev_start[j + 1]; ++k) {
-          F += share[k].force;
-          T += share[k].torque;
-        }
-        f_[j] = F;
-        t_[j] = T;
-        if ((!is_finite(F) || !is_finite(T) || !is_finite(X[j])) && tally.blowup_index < 0) {
-          tally.blowup_index = j;
-          tally.blowup_x = X[j];
-          tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
-        }
-        if (kick) half_kick(half, inv_m_[j], inv_inertia_[j], F, T, v_[j], w_[j]);  // integrate_second_half
-      }
-      if (next)
-        block_d2 = std::max(block_d2, first.advance(MOT[j], inv_m_[j], inv_inertia_[j], f_[j], t_[j], XB[j], x_[j], v_[j], w_[j]));
     }
-    return block_d2;
-  };
-  double max_d2 = 0.0;
-#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles) reduction(max : max_d2)
-  for (long b = 0; b < nblocks; ++b) {
-    BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
-    const long j0 = b * kBlock, j_end = std::min(n, (b + 1) * kBlock);
-    max_d2 = std::max(max_d2, fetch_ahead ? sweep_block(j0, j_end, tally, std::true_type{})
-                                          : sweep_block(j0, j_end, tally, std::false_type{}));
   }
   // Fixed-order reduction over blocks.
   for (auto& f : wall_force_) f = {};

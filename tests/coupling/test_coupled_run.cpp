@@ -28,8 +28,11 @@ namespace fs = std::filesystem;
 namespace {
 const std::string kCase = std::string(CENTREC_SOURCE_DIR) + "/tests/coupling/small_coupled.yaml";
 // Stored by a run of this test (2D, 60 x 12; DEM deterministic at any thread count and, with
-// -ffp-contract=off, in Release and sanitizer builds alike: 1185.096261 K in both).
-constexpr double kStoredTout = 1185.10;
+// -ffp-contract=off, in Release and sanitizer builds alike). It pins one DEM trajectory, not
+// the physics: on 2026-12-01 the engine began to sum the partner shares on a particle before
+// its own row's part (dem/partner_routing.hpp), which changes forces in the last bit only,
+// and the short film's T_out moved from 1185.096261 K to 1167.631747 K.
+constexpr double kStoredTout = 1167.63;
 
 
 // The case with its text edited (thermal-only or particle changes).

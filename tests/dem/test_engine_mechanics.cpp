@@ -10,6 +10,7 @@
 
 #include "dem/neighbour_list.hpp"
 #include "dem_test_support.hpp"
+#include "periodic_chain.hpp"
 
 using namespace centrec::dem;
 using namespace centrec::dem::testing;
@@ -190,14 +191,11 @@ TEST(EngineMechanics, PeriodOfThreeCutoffsSurvivesCellEnlargement) {
 // The list's reach (how far ahead of a row the force pass fetches partner data) is the
 // largest forward partner distance, not counting entries that close a periodic ring.
 TEST(EngineMechanics, NeighbourListReachSkipsPeriodicWrapEntries) {
-  PeriodicZ pz;
-  pz.on = true;
-  pz.lo = 0.0;
-  pz.hi = 10.0;
-  std::vector<Vec3> x;
-  for (int k = 0; k < 10; ++k) x.push_back({0.0, 0.0, 0.5 + k});  // a touching chain round the period
-  const std::vector<double> r(x.size(), 0.5);
-  const std::vector<Motion> motion(x.size(), Motion::free);
+  const PeriodicChain chain = periodic_chain(10);
+  const PeriodicZ& pz = chain.pz;
+  const std::vector<Vec3>& x = chain.x;
+  const std::vector<double>& r = chain.r;
+  const std::vector<Motion>& motion = chain.motion;
   CellGrid grid;
   const std::vector<std::int32_t> order = sort_into_cells(grid, x, 1.1, pz);
   for (std::size_t k = 0; k < order.size(); ++k) ASSERT_EQ(order[k], static_cast<std::int32_t>(k));

@@ -1,7 +1,9 @@
-// (h) 1-thread and 2-thread runs agree BITWISE: every pair is evaluated from both sides in a
-// canonical operand order, each thread writes only its own particles, and wall-force sums
-// are reduced over fixed blocks in a fixed order (see dem/simulation.hpp). Also: the same
-// steps taken in one step() call or in many agree bitwise (inside a call the gather pass
+// (h) 1-thread and 2-thread runs agree BITWISE (and 3-thread ones, whose row ranges split
+// the film elsewhere): every pair is evaluated in a canonical operand order, the shares on
+// each partner are summed in row order whether added directly or parked by a range
+// boundary (dem/partner_routing.hpp), and wall-force sums are reduced over fixed blocks in
+// a fixed order (see dem/simulation.hpp). Also: the same
+// steps taken in one step() call or in many agree bitwise (inside a call the force pass
 // fuses the next step's first half, which a call boundary does in a sweep of its own).
 #include <gtest/gtest.h>
 
@@ -58,13 +60,16 @@ bool walls_equal(const Snapshot& a, const Snapshot& b) {
 }  // namespace
 
 TEST(ThreadDeterminism, OneAndTwoThreadsAgreeBitwise) {
-  const Snapshot a = run(1), b = run(2);
-  const std::size_t differing = differing_particles(a, b);
+  const Snapshot a = run(1), b = run(2), c = run(3);
+  const std::size_t differing = differing_particles(a, b), differing3 = differing_particles(a, c);
   std::printf("(h) film of %zu particles, 600 steps, %zu pair contacts: %zu particles differ bitwise between 1 and "
-              "2 threads (tolerance 0); wall forces identical: %s\n",
-              a.state.size(), a.contacts, differing, walls_equal(a, b) ? "yes" : "no");
+              "2 threads, %zu between 1 and 3 (tolerance 0); wall forces identical: %s, %s\n",
+              a.state.size(), a.contacts, differing, differing3, walls_equal(a, b) ? "yes" : "no",
+              walls_equal(a, c) ? "yes" : "no");
   EXPECT_EQ(differing, 0u);
+  EXPECT_EQ(differing3, 0u);
   EXPECT_TRUE(walls_equal(a, b));
+  EXPECT_TRUE(walls_equal(a, c));
   EXPECT_GT(a.contacts, 500u);  // the film is dense: the comparison exercises contacts
 }
 
