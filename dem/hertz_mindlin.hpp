@@ -37,6 +37,8 @@ struct TangentialResult {
 
 // shear += vt dt, projected onto the tangent plane; Ft = -kt shear; if |Ft| > mu|Fn| scale
 // Ft to mu|Fn| and set shear = -Ft/kt (no damping while sliding); else Ft -= gamma_t vt.
+// The cap tests the elastic part only, so a sticking, damped contact may carry
+// |Ft| > mu|Fn| (LIGGGHTS 3.8 tangential_model_history.h does the same).
 // The new tangential displacement is written to `shear` (in the caller's history, so the
 // result is not merged through a stack copy that stalls store forwarding).
 inline TangentialResult mindlin_tangential(const HertzMindlinCoefficients& k, double mu, double fn, Vec3 n, Vec3 vt,

@@ -7,8 +7,12 @@
 // The law caps |Ft| at mu |Fn| (DESIGN.md 3, as LIGGGHTS): while the dashpot makes Fn
 // tensile near separation, |Fn| still feeds friction, so the tangential impulse is
 // mu * integral |Fn| dt, which exceeds mu m (1+e) v_n for strongly damped contacts. The
-// test checks both: the impulse against mu * integral|Fn| (the law itself) for every e,
-// and against the rigid-body formula where tension is negligible (e = 0.9).
+// test checks both: the impulse against mu * integral|Fn| (the law itself) at e = 0.9, and
+// against the rigid-body formula (equal at e = 0.9, a lower bound below).
+// The cap applies to the elastic part -kt shear; the dashpot -gamma_t vt is added only when
+// the contact sticks, so in a stick phase |Ft| may exceed mu |Fn| by gamma_t |vt|. LIGGGHTS
+// 3.8 (tangential_model_history.h, surfacesIntersect) does the same, checked 2026-12-01.
+// At e = 0.46 this is why a sliding rebound loses 6-12 % more than mu * integral|Fn| / m.
 #include <gtest/gtest.h>
 
 #include <cmath>
