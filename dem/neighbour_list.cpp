@@ -8,7 +8,7 @@
 namespace centrec::dem {
 
 std::size_t NeighbourList::bytes() const {
-  return (start.capacity() + rev_start.capacity() + rev_pos.capacity()) * sizeof(std::uint32_t) +
+  return start.capacity() * sizeof(std::uint32_t) +
          nbr.capacity() * sizeof(std::int32_t) + hist.capacity() * sizeof(ContactHistory);
 }
 
@@ -172,13 +172,6 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
   for (long i = 0; i < n; ++i)
     for (std::uint32_t e = out.start[i]; e < out.start[i + 1]; ++e)
       if (const long d = out.nbr[e] - i; d <= n / 2) out.reach = std::max(out.reach, d);
-  // Reverse index, in increasing entry order (a stable counting sort by partner).
-  out.rev_start.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (std::int32_t j : out.nbr) ++out.rev_start[static_cast<std::size_t>(j) + 1];
-  for (long j = 0; j < n; ++j) out.rev_start[j + 1] += out.rev_start[j];
-  out.rev_pos.resize(out.nbr.size());
-  std::vector<std::uint32_t> fill(out.rev_start.begin(), out.rev_start.end() - 1);
-  for (std::uint32_t e = 0; e < out.nbr.size(); ++e) out.rev_pos[e] = fill[static_cast<std::size_t>(out.nbr[e])]++;
 }
 
 }  // namespace centrec::dem

@@ -1,10 +1,7 @@
 #pragma once
 // Cell grid, spatial sort and half Verlet neighbour lists with contact history
 // (DESIGN.md section 3). Pair (i, j), i < j by index, is stored once, in row i, with its
-// history; the reverse index (rev_start/rev_pos) numbers the entries naming each j, grouped
-// by j in increasing entry order, so the force pass can park the shares on a j named by
-// another thread's rows in that order and sum them in a fixed order (partner_routing.hpp:
-// bitwise determinism for any thread count, no atomics).
+// history (the shares on j are routed by partner_routing.hpp).
 // History is kept in the pair's canonical orientation (lower particle id = "i" of the
 // contact law), so re-sorting never flips it.
 #include <cstdint>
@@ -25,8 +22,6 @@ struct NeighbourList {
   std::vector<std::uint32_t> start;  // rows + 1 offsets into nbr/hist
   std::vector<std::int32_t> nbr;     // partner index
   std::vector<ContactHistory> hist;  // history of the pair (zero = not in contact)
-  std::vector<std::uint32_t> rev_start;  // rows + 1: entries naming j have rev_pos in [rev_start[j], rev_start[j + 1])
-  std::vector<std::uint32_t> rev_pos;    // per entry: its position in that order (grouped by nbr, then by entry)
   // Largest partner distance j - i of an entry that does not reach round a periodic
   // boundary (j - i <= rows / 2): how far ahead of row i its partners' data is first read.
   long reach = 0;
@@ -62,7 +57,7 @@ std::vector<std::int32_t> sort_into_cells(CellGrid& grid, const std::vector<Vec3
 // Half list of particles already in cell order: row i holds j > i with
 // |x_i - x_j| < r_i + r_j + skin, unless neither is Motion::free (nothing to compute).
 // Histories are taken from `carried` (same numbering; a pair may sit in either of its two
-// rows there), others start at zero. Also builds the reverse index.
+// rows there), others start at zero.
 void build_neighbour_list(NeighbourList& out, const CellGrid& grid, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
                           const PeriodicZ& pz, const NeighbourList& carried, int threads);
