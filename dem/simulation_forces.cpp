@@ -15,20 +15,11 @@ namespace centrec::dem {
 // Rows beyond the list's reach at which the force pass fetches partner data ahead.
 constexpr long kPrefetchMargin = 256;
 // Rows ahead at which the pass fetches the row's own streams (list entries, histories,
-// accumulators, integration data): at ~150 ns per row, 32 rows are far more than a memory
-// latency ahead, and the few kB in flight stay well inside L1 + L2.
+// accumulators, integration data): at ~100-150 ns per row, 32 rows are well over a memory
+// latency ahead, and the few kB in flight stay inside L1 + L2.
 constexpr long kRowFetchAhead = 32;
 
 namespace {
-
-// Every 64-byte cache line that [begin, end) touches, for reading (write = 0) or writing
-// (write = 1).
-template <int write>
-inline void prefetch_span(const void* begin, const void* end) {
-  const std::uintptr_t last = reinterpret_cast<std::uintptr_t>(end);
-  for (std::uintptr_t c = reinterpret_cast<std::uintptr_t>(begin) & ~std::uintptr_t{63}; c < last; c += 64)
-    __builtin_prefetch(reinterpret_cast<const void*>(c), write);
-}
 
 // What follows a particle's completed force and torque (see Simulation::AfterForces): the
 // blow-up check, the second half kick, the next step's first half. Returns the squared
@@ -139,18 +130,23 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
       // list entry, 1 to 24 bytes per particle), more than the hardware prefetchers track,
       // so a film beyond the cache waited on the next line of one stream after another.
       if (const long q = i + kRowFetchAhead; q < n) {
-        const std::uint32_t e0 = start[q], e1 = start[q + 1];
-        prefetch_span<0>(nbr + e0, nbr + e1);
-        prefetch_span<0>(slot + e0, slot + e1);
-        prefetch_span<1>(touch + e0, touch + e1);
-        prefetch_span<1>(hist + e0, hist + e1);
+        // Fixed counts, no loops: a row holds ~5 entries, whose histories span up to five
+        // lines from the line of its first; the next rows' fetches cover longer rows.
+        const std::uint32_t e0 = start[q];
+        const char* h = reinterpret_cast<const char*>(hist + e0);
+        __builtin_prefetch(h, 1);
+        __builtin_prefetch(h + 64, 1);
+        __builtin_prefetch(h + 128, 1);
+        __builtin_prefetch(h + 192, 1);
+        __builtin_prefetch(h + 256, 1);
+        __builtin_prefetch(nbr + e0);
+        __builtin_prefetch(slot + e0);
+        __builtin_prefetch(touch + e0, 1);
         __builtin_prefetch(start + q + 1);
         __builtin_prefetch(park_start + q + 1);
         __builtin_prefetch(MOT + q);
-        // The candidate walls' histories, by the mask fetched one distance earlier.
-        for (std::uint32_t m = wall_mask[q]; m != 0u; m &= m - 1u)
-          __builtin_prefetch(whist + static_cast<std::size_t>(q) * nw + static_cast<std::size_t>(__builtin_ctz(m)), 1);
-        if (q + kRowFetchAhead < n) __builtin_prefetch(wall_mask + q + kRowFetchAhead);
+        __builtin_prefetch(wall_mask + q);
+        __builtin_prefetch(whist + static_cast<std::size_t>(q) * nw, 1);
         __builtin_prefetch(f_.data() + q, 1);
         __builtin_prefetch(t_.data() + q, 1);
         __builtin_prefetch(finish.x_build + q);
