@@ -133,12 +133,10 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
         // Fixed counts, no loops: a row holds ~5 entries, whose histories span up to five
         // lines from the line of its first; the next rows' fetches cover longer rows.
         const std::uint32_t e0 = start[q];
-        const char* h = reinterpret_cast<const char*>(hist + e0);
-        __builtin_prefetch(h, 1);
-        __builtin_prefetch(h + 64, 1);
-        __builtin_prefetch(h + 128, 1);
-        __builtin_prefetch(h + 192, 1);
-        __builtin_prefetch(h + 256, 1);
+        // (Addresses as integers: past the list's end they are fetched, never dereferenced.)
+        const std::uintptr_t h = reinterpret_cast<std::uintptr_t>(hist + e0);
+        for (std::uintptr_t line = 0; line < 5; ++line)
+          __builtin_prefetch(reinterpret_cast<const void*>(h + 64 * line), 1);
         __builtin_prefetch(nbr + e0);
         __builtin_prefetch(slot + e0);
         __builtin_prefetch(touch + e0, 1);
