@@ -15,7 +15,7 @@ namespace centrec::dem {
 // Rows beyond the list's reach at which the force pass fetches partner data ahead.
 constexpr long kPrefetchMargin = 256;
 // Rows ahead at which the pass fetches the row's own streams (list entries, histories,
-// accumulators, integration data): at ~100-150 ns per row, 32 rows are well over a memory
+// wall data, f, t and integration data; its accumulators come with the partner data): at ~100-150 ns per row, 32 rows are well over a memory
 // latency ahead, and the few kB in flight stay inside L1 + L2.
 constexpr long kRowFetchAhead = 32;
 
