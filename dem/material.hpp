@@ -4,6 +4,14 @@
 
 namespace centrec::dem {
 
+// A material of one Simulation, as Simulation::add_material returned it. It has no
+// default: every particle and wall names the material it is made of, so none can fall
+// back on a placeholder.
+struct MaterialId {
+  explicit constexpr MaterialId(int i) : index(i) {}
+  int index;
+};
+
 struct Material {
   double youngs_modulus = 5e6;   // Pa (paper Table 1)
   double poisson_ratio = 0.3;

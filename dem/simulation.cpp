@@ -59,28 +59,34 @@ Simulation::Simulation(const SimulationConfig& config) : cfg_(config), impl_(std
   if (std::fabs(norm(cfg_.drum.axis) - 1.0) > 1e-9) throw std::invalid_argument("drum.axis must be a unit vector");
   impl_->pz = {cfg_.periodic_z, cfg_.z_lo, cfg_.z_hi};
   set_threads(cfg_.threads);
-  add_material(Material{});
 }
 
 Simulation::~Simulation() = default;
 
 void Simulation::set_threads(int n) { threads_ = n > 0 ? n : omp_get_max_threads(); }
 
-int Simulation::add_material(const Material& m) {
+MaterialId Simulation::add_material(const Material& m) {
   if (!(m.youngs_modulus > 0.0) || !(m.density > 0.0) || !(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
     throw std::invalid_argument("material: need E > 0, density > 0, -1 < nu < 0.5");
   const std::size_t old = n_mat_;
   std::vector<PairInteraction> inter((old + 1) * (old + 1));
+  std::vector<char> set((old + 1) * (old + 1), 0);
   for (std::size_t a = 0; a < old; ++a)
-    for (std::size_t b = 0; b < old; ++b) inter[a * (old + 1) + b] = interactions_[a * old + b];
+    for (std::size_t b = 0; b < old; ++b) {
+      inter[a * (old + 1) + b] = interactions_[a * old + b];
+      set[a * (old + 1) + b] = interaction_set_[a * old + b];
+    }
   interactions_.swap(inter);
+  interaction_set_.swap(set);
   materials_.push_back(m);
+  material_in_use_.push_back(0);
   n_mat_ = old + 1;
   update_pair_constants();
-  return static_cast<int>(old);
+  return MaterialId(static_cast<int>(old));
 }
 
-void Simulation::set_interaction(int a, int b, const PairInteraction& p) {
+void Simulation::set_interaction(MaterialId ma, MaterialId mb, const PairInteraction& p) {
+  const int a = ma.index, b = mb.index;
   if (a < 0 || b < 0 || static_cast<std::size_t>(a) >= n_mat_ || static_cast<std::size_t>(b) >= n_mat_)
     throw std::invalid_argument("set_interaction: unknown material index");
   if (!(p.restitution > 0.0 && p.restitution <= 1.0))
@@ -89,7 +95,24 @@ void Simulation::set_interaction(int a, int b, const PairInteraction& p) {
     throw std::invalid_argument("friction and rolling_friction must be >= 0");
   interactions_[static_cast<std::size_t>(a) * n_mat_ + b] = p;
   interactions_[static_cast<std::size_t>(b) * n_mat_ + a] = p;
+  interaction_set_[static_cast<std::size_t>(a) * n_mat_ + b] = 1;
+  interaction_set_[static_cast<std::size_t>(b) * n_mat_ + a] = 1;
   update_pair_constants();
+}
+
+void Simulation::require_interactions(int m, const char* what) {
+  if (m < 0 || static_cast<std::size_t>(m) >= n_mat_)
+    throw std::invalid_argument(std::string(what) + ": unknown material index " + std::to_string(m));
+  auto need = [&](int other, const char* kind) {
+    if (!interaction_set_[static_cast<std::size_t>(m) * n_mat_ + static_cast<std::size_t>(other)])
+      throw std::invalid_argument(std::string(what) + ": materials " + std::to_string(m) + " and " +
+                                  std::to_string(other) + " (" + kind +
+                                  ") would meet but have no interaction: call set_interaction first");
+  };
+  material_in_use_[static_cast<std::size_t>(m)] = 1;
+  for (std::size_t u = 0; u < n_mat_; ++u)
+    if (material_in_use_[u]) need(static_cast<int>(u), "particles");
+  for (const Wall& w : walls_) need(w.material, "a wall");
 }
 
 void Simulation::update_pair_constants() {
@@ -102,6 +125,10 @@ void Simulation::update_pair_constants() {
 int Simulation::add_wall(const Wall& w) {
   check_wall(w);
   if (static_cast<std::size_t>(w.material) >= n_mat_) throw std::invalid_argument("wall: unknown material index");
+  for (std::size_t u = 0; u < n_mat_; ++u)
+    if (material_in_use_[u] && !interaction_set_[u * n_mat_ + static_cast<std::size_t>(w.material)])
+      throw std::invalid_argument("wall: its material " + std::to_string(w.material) + " and the particles' material " +
+                                  std::to_string(u) + " have no interaction: call set_interaction first");
   if (walls_.size() >= static_cast<std::size_t>(kMaxWalls))
     throw std::invalid_argument("at most " + std::to_string(kMaxWalls) + " walls");
   // Re-lay the N x walls history array with one more column.
@@ -126,11 +153,10 @@ const ContactHistory& Simulation::wall_history(std::size_t index, int wall) cons
 
 std::int64_t Simulation::add_particle(const ParticleInit& p) {
   if (!(p.radius > 0.0)) throw std::invalid_argument("particle radius must be > 0");
-  if (p.material < 0 || static_cast<std::size_t>(p.material) >= n_mat_)
-    throw std::invalid_argument("particle: unknown material index " + std::to_string(p.material));
   if (!is_finite(p.x) || !is_finite(p.v) || !is_finite(p.w)) throw std::invalid_argument("particle: non-finite state");
+  require_interactions(p.material.index, "particle");
   invalidate_list();
-  const double mass = sphere_mass(materials_[static_cast<std::size_t>(p.material)].density, p.radius);
+  const double mass = sphere_mass(materials_[static_cast<std::size_t>(p.material.index)].density, p.radius);
   const std::int64_t id = next_id_++;
   if (insert_log_.empty() || insert_log_.back().first != step_) insert_log_.push_back({step_, id});
   id_.push_back(id);
@@ -145,7 +171,7 @@ std::int64_t Simulation::add_particle(const ParticleInit& p) {
   m_.push_back(mass);
   inv_m_.push_back(1.0 / mass);
   inv_inertia_.push_back(1.0 / (0.4 * mass * p.radius * p.radius));
-  mat_.push_back(p.material);
+  mat_.push_back(p.material.index);
   motion_.push_back(p.motion);
   impl_->wall_hist.resize(x_.size() * walls_.size());
   dirty_ = true;

@@ -59,11 +59,16 @@ struct SimulationConfig {
   bool verbose = true;  // print the time-step advice (one line) at set-up
 };
 
+// A particle to insert. Material, radius and position have no default: `ParticleInit p;`
+// does not compile, and every particle names the material it is made of.
 struct ParticleInit {
-  Vec3 x, v, w;  // position m, velocity m/s, angular velocity rad/s
-  double radius = 0.6e-3;
-  int material = 0;
-  Motion motion = Motion::free;
+  ParticleInit(MaterialId material_, double radius_, Vec3 x_, Vec3 v_ = {}, Vec3 w_ = {},
+               Motion motion_ = Motion::free)
+      : material(material_), radius(radius_), x(x_), v(v_), w(w_), motion(motion_) {}
+  MaterialId material;  // from Simulation::add_material
+  double radius;        // m (> 0)
+  Vec3 x, v, w;         // position m, velocity m/s, angular velocity rad/s
+  Motion motion;
 };
 
 struct NeighbourStats {
@@ -93,9 +98,11 @@ class Simulation {
   Simulation& operator=(const Simulation&) = delete;
 
   // Materials and their pair interactions (particle-particle and particle-wall alike).
-  // Material 0 exists from the start with Material{} defaults and PairInteraction{} with itself.
-  int add_material(const Material& m);
-  void set_interaction(int material_a, int material_b, const PairInteraction& p);
+  // The engine starts with none. Every pair that can meet needs set_interaction() before
+  // the particle or wall that makes it meet is added: add_particle and add_wall refuse a
+  // pair without one (there is no default interaction).
+  MaterialId add_material(const Material& m);
+  void set_interaction(MaterialId a, MaterialId b, const PairInteraction& p);
 
   int add_wall(const Wall& w);  // returns the wall index
   std::size_t wall_count() const;
@@ -183,6 +190,9 @@ class Simulation {
   void invalidate_list();  // particles or walls changed: carry contacts, rebuild before the next step
   void permute_particles(const std::vector<std::int32_t>& order);
   void update_pair_constants();
+  // Refuses material m if a pair it would meet (materials of particles present, walls) has
+  // no interaction; then counts m as in use. `what` names the caller in the message.
+  void require_interactions(int m, const char* what);
   // x: the particle's position when the blow-up was detected (the force pass may have moved it since).
   [[noreturn]] void report_blow_up(std::size_t i, Vec3 x, double overlap, const std::string& partner) const;
   PairConstants const& pair(int a, int b) const { return pc_[static_cast<std::size_t>(a) * n_mat_ + b]; }
@@ -199,6 +209,8 @@ class Simulation {
 
   std::vector<Material> materials_;
   std::vector<PairInteraction> interactions_;  // n_mat x n_mat
+  std::vector<char> interaction_set_;          // n_mat x n_mat: set_interaction() called
+  std::vector<char> material_in_use_;          // n_mat: some particle has been made of it
   std::vector<PairConstants> pc_;              // n_mat x n_mat
   std::size_t n_mat_ = 0;
 

@@ -86,6 +86,16 @@ void Simulation::import_state(const SimulationState& s) {
       refuse("particle id " + std::to_string(s.id[i]) + " has a bad radius or non-finite state");
   }
 
+  // The imported particles replace every particle: their materials are the ones in use,
+  // and each must have its interactions set in this engine (not just equal defaults).
+  std::fill(material_in_use_.begin(), material_in_use_.end(), 0);
+  std::vector<char> seen(n_mat_, 0);
+  for (int m : s.material)
+    if (!seen[static_cast<std::size_t>(m)]) {
+      seen[static_cast<std::size_t>(m)] = 1;
+      require_interactions(m, "import_state");
+    }
+
   for (std::size_t k = 0; k < walls_.size(); ++k) walls_[k].origin = s.wall_origins[k];
   wall_force_ = s.wall_force;
   next_id_ = s.next_id;

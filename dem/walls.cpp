@@ -6,40 +6,40 @@
 
 namespace centrec::dem {
 
-Wall Wall::plane(Vec3 point, Vec3 normal, int material) {
+Wall Wall::plane(Vec3 point, Vec3 normal, MaterialId material) {
   Wall w;
   w.shape = WallShape::plane;
   w.origin = point;
   w.axis = normalized(normal);
-  w.material = material;
+  w.material = material.index;
   return w;
 }
 
 namespace {
 
 // A wall of revolution about `axis` through `origin`, spinning at omega about that axis.
-Wall revolving(WallShape shape, Vec3 origin, Vec3 axis, double r, double omega, int material) {
+Wall revolving(WallShape shape, Vec3 origin, Vec3 axis, double r, double omega, MaterialId material) {
   Wall w;
   w.shape = shape;
   w.origin = origin;
   w.axis = normalized(axis);
   w.radius = r;
   w.angular_velocity = omega * w.axis;
-  w.material = material;
+  w.material = material.index;
   return w;
 }
 
 }  // namespace
 
 Wall Wall::cylinder(Vec3 origin, Vec3 axis, double r, double axial_min, double axial_max, double omega,
-                    int material) {
+                    MaterialId material) {
   Wall w = revolving(WallShape::cylinder, origin, axis, r, omega, material);
   w.axial_min = axial_min;
   w.axial_max = axial_max;
   return w;
 }
 
-Wall Wall::disc(Vec3 centre, Vec3 axis, double outer_r, double inner_r, double omega, int material) {
+Wall Wall::disc(Vec3 centre, Vec3 axis, double outer_r, double inner_r, double omega, MaterialId material) {
   Wall w = revolving(WallShape::disc, centre, axis, outer_r, omega, material);
   w.inner_radius = inner_r;
   return w;
@@ -57,7 +57,7 @@ void check_wall(const Wall& w) {
   // Spinning about anything but the symmetry axis would move the geometry.
   if (norm(cross(w.angular_velocity, w.axis)) > 1e-12 * (1.0 + norm(w.angular_velocity)))
     fail("angular_velocity must be parallel to the axis");
-  if (w.material < 0) fail("material index must be >= 0");
+  if (w.material < 0) fail("no material (build walls with Wall::plane/cylinder/disc)");
 }
 
 }  // namespace centrec::dem

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "dem/material.hpp"
 #include "dem/vec3.hpp"
 
 namespace centrec::dem {
@@ -17,7 +18,7 @@ enum class WallShape : std::uint8_t { plane, cylinder, disc };
 
 struct Wall {
   WallShape shape = WallShape::plane;
-  int material = 0;      // index returned by Simulation::add_material
+  int material = -1;     // MaterialId::index, set by the factories (add_wall refuses -1)
   Vec3 origin;           // plane: a point on it; cylinder: a point on the axis; disc: centre
   Vec3 axis{0, 0, 1};    // unit; plane: normal pointing to the particle side; else symmetry axis
   double radius = 0.0;        // cylinder radius; disc outer radius
@@ -27,14 +28,14 @@ struct Wall {
   Vec3 velocity;          // translation, m/s (moves origin each step)
   Vec3 angular_velocity;  // rad/s, must be parallel to axis (rotation keeps the geometry)
 
-  static Wall plane(Vec3 point, Vec3 normal, int material = 0);
+  static Wall plane(Vec3 point, Vec3 normal, MaterialId material);
   // Interior of a cylinder of radius r about the axis through origin, extent
   // [axial_min, axial_max] along the axis, spinning at omega (rad/s, right-handed about axis).
   static Wall cylinder(Vec3 origin, Vec3 axis, double r, double axial_min, double axial_max, double omega,
-                       int material = 0);
+                       MaterialId material);
   // Flat annulus inner_r <= rho <= outer_r in the plane through centre normal to axis,
   // spinning at omega about axis. inner_r = 0 gives a full disc.
-  static Wall disc(Vec3 centre, Vec3 axis, double outer_r, double inner_r, double omega, int material = 0);
+  static Wall disc(Vec3 centre, Vec3 axis, double outer_r, double inner_r, double omega, MaterialId material);
 };
 
 // Contact geometry of a sphere with a wall.

@@ -65,9 +65,10 @@ void check(const SceneConfig& c) {
 void CentrecScene::build_engine() {
   check(cfg_);
   sim_ = std::make_unique<Simulation>(engine_config(cfg_));
-  // The engine's default material 0 stays unused; the scene adds its particles and wall.
-  const int p = sim_->add_material(cfg_.particle.material);
-  const int w = sim_->add_material(cfg_.wall_material);
+  // Two materials: every particle (glued, pre-filled, fed, slice-controlled) is made of the
+  // case's particle material, every wall of the case's wall material.
+  const MaterialId p = sim_->add_material(cfg_.particle.material);
+  const MaterialId w = sim_->add_material(cfg_.wall_material);
   sim_->set_interaction(p, p, cfg_.particle_particle);
   sim_->set_interaction(p, w, cfg_.particle_wall);
   particle_material_ = p;
@@ -80,7 +81,7 @@ CentrecScene::CentrecScene(const SceneConfig& config, const SceneState& state) :
   const bool fed = cfg_.feeder.enabled && !cfg_.slice.enabled;
   if (state.has_feeder != fed) throw std::invalid_argument("checkpoint: the feeder setting differs from the case");
   if (fed) {
-    feeder_ = std::make_unique<Feeder>(cfg_, cfg_.seed);
+    feeder_ = std::make_unique<Feeder>(cfg_, particle_material_, cfg_.seed);
     feeder_->restore(state.feeder);
   }
   sim_->import_state(state.engine);
@@ -112,7 +113,7 @@ SceneState CentrecScene::export_state() const {
 
 CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
   build_engine();
-  const int p = particle_material_;
+  const MaterialId p = particle_material_;
 
   const double R = drum_radius();
   const bool periodic = cfg_.slice.enabled;
@@ -120,14 +121,9 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
   double inset = 0.0;
   if (cfg_.rough_wall.enabled) {
     for (const Vec3& c : rough_wall_centres(cfg_.rough_wall, R, 0.0, zmax, periodic)) {
-      ParticleInit g;
-      g.x = c;
-      g.v = cross(Vec3{0, 0, cfg_.drum.omega}, c);
-      g.w = {0, 0, cfg_.drum.omega};
-      g.radius = 0.5 * cfg_.rough_wall.sphere_diameter;
-      g.material = p;
-      g.motion = Motion::drum;
-      sim_->add_particle(g);
+      // Glued: turning rigidly with the drum.
+      sim_->add_particle({p, 0.5 * cfg_.rough_wall.sphere_diameter, c, cross(Vec3{0, 0, cfg_.drum.omega}, c),
+                          {0, 0, cfg_.drum.omega}, Motion::drum});
       ++glued_;
     }
     inset = cfg_.rough_wall.sphere_diameter;
@@ -140,18 +136,13 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
     const double z0 = periodic ? 0.0 : cfg_.initial_film.axial_from;
     const double z1 = periodic ? zmax : (cfg_.initial_film.axial_to > 0.0 ? cfg_.initial_film.axial_to : zmax);
     for (const FilmSite& s : packed_film_sites(radii, R, inset, z0, z1, periodic)) {
-      ParticleInit f;
-      f.x = s.x;
-      f.v = cross(Vec3{0, 0, cfg_.drum.omega}, s.x);  // rigid co-rotation
-      f.w = {0, 0, cfg_.drum.omega};
-      f.radius = s.radius;
-      f.material = p;
-      sim_->add_particle(f);
+      // Rigid co-rotation.
+      sim_->add_particle({p, s.radius, s.x, cross(Vec3{0, 0, cfg_.drum.omega}, s.x), {0, 0, cfg_.drum.omega}});
     }
   }
 
   if (cfg_.feeder.enabled && !periodic) {
-    feeder_ = std::make_unique<Feeder>(cfg_, cfg_.seed);
+    feeder_ = std::make_unique<Feeder>(cfg_, particle_material_, cfg_.seed);
     // An empty drum gives the engine nothing to advise dt from: insert the first batch
     // now (it is the first batch's feed, so advance() skips feeding once).
     if (sim_->size() == 0) {
@@ -169,7 +160,7 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
 void CentrecScene::build_walls() {
   const double R = drum_radius(), L = cfg_.drum.length, om = cfg_.drum.omega;
   const Vec3 o{0, 0, 0}, z{0, 0, 1};
-  const int w = wall_material_;
+  const MaterialId w = wall_material_;
   if (cfg_.slice.enabled) {
     sim_->add_wall(Wall::cylinder(o, z, R, -1e30, 1e30, om, w));
     return;

@@ -58,6 +58,7 @@ class CentrecScene {
   Simulation& simulation() { return *sim_; }
   const Simulation& simulation() const { return *sim_; }
   const SceneConfig& config() const { return cfg_; }
+  MaterialId particle_material() const { return particle_material_; }  // every particle's
   const std::vector<MassFlowSample>& mass_flow_log() const { return log_; }
   const FeederStats& feeder_stats() const;
   // The slice holdup controller's windows (empty without a controller).
@@ -82,7 +83,8 @@ class CentrecScene {
   std::vector<MassFlowSample> log_;
   std::int64_t steps_per_batch_ = 1;
   std::int64_t glued_ = 0;
-  int particle_material_ = 0, wall_material_ = 0;
+  // Set by build_engine (-1 until then: the engine refuses it).
+  MaterialId particle_material_{-1}, wall_material_{-1};
   bool prefed_ = false;  // the first batch was fed before set-up
   double out_total_ = 0.0, lost_total_ = 0.0;
 };

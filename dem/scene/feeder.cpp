@@ -8,8 +8,8 @@
 
 namespace centrec::dem::scene {
 
-Feeder::Feeder(const SceneConfig& config, std::uint64_t seed)
-    : cfg_(config), sizes_(config.particle, seed), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {
+Feeder::Feeder(const SceneConfig& config, MaterialId particle_material, std::uint64_t seed)
+    : cfg_(config), material_(particle_material), sizes_(config.particle, seed), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {
   next_diameter_ = sizes_.next_diameter();
 }
 
@@ -75,13 +75,9 @@ double Feeder::feed(Simulation& sim, double elapsed) {
         if (norm2(p - near[k]) < s * s) free_spot = false;
       }
       if (!free_spot) continue;
-      ParticleInit init;
-      init.x = p;
       // Tangential direction of the spin at p: (omega z) x r, normalised.
       const double sgn = cfg_.drum.omega >= 0.0 ? 1.0 : -1.0;
-      init.v = Vec3{-std::sin(th), std::cos(th), 0.0} * (sgn * std::fabs(speed));
-      init.radius = radius;
-      sim.add_particle(init);
+      sim.add_particle({material_, radius, p, Vec3{-std::sin(th), std::cos(th), 0.0} * (sgn * std::fabs(speed))});
       near.push_back(p);
       near_r.push_back(radius);
       placed = true;

@@ -29,7 +29,9 @@ struct FeederState {
 
 class Feeder {
  public:
-  Feeder(const SceneConfig& config, std::uint64_t seed);
+  // Fed particles are made of `particle_material` (the scene's material for the case's
+  // particles); their mass is booked with the case's particle density, the same one.
+  Feeder(const SceneConfig& config, MaterialId particle_material, std::uint64_t seed);
   // Inserts the mass due over `elapsed` seconds (plus any backlog); returns the mass inserted.
   double feed(Simulation& sim, double elapsed);
   const FeederStats& stats() const { return stats_; }
@@ -38,6 +40,7 @@ class Feeder {
 
  private:
   SceneConfig cfg_;
+  MaterialId material_;
   SizeSampler sizes_;
   std::mt19937_64 rng_;
   double backlog_ = 0.0;        // kg due but not yet inserted

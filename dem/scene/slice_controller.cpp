@@ -16,7 +16,7 @@ double slice_axial_mass_flow(const Simulation& sim, double slice_length) {
   return p / slice_length;
 }
 
-SliceHoldupController::SliceHoldupController(const SceneConfig& config, int particle_material, double start_time)
+SliceHoldupController::SliceHoldupController(const SceneConfig& config, MaterialId particle_material, double start_time)
     : cfg_(config),
       material_(particle_material),
       window_(config.slice.controller_window_turns * 2.0 * M_PI / std::fabs(config.drum.omega)),
@@ -100,15 +100,10 @@ std::int64_t SliceHoldupController::insert(Simulation& sim, std::int64_t count) 
         }
       }
       if (!clear) continue;
-      ParticleInit init;
-      init.x = x;
       // Co-rotating with the drum, moving along z with its neighbours.
-      init.v = Vec3{-om * x.y, om * x.x, vz_n ? vz_sum / vz_n : 0.0};
-      init.w = {0.0, 0.0, om};
-      init.radius = radius;
-      init.material = material_;
-      sim.add_particle(init);
-      all.push_back({x, radius, init.v.z, true});
+      const double vz = vz_n ? vz_sum / vz_n : 0.0;
+      sim.add_particle({material_, radius, x, Vec3{-om * x.y, om * x.x, vz}, {0.0, 0.0, om}});
+      all.push_back({x, radius, vz, true});
       placed = true;
       ++added;
     }

@@ -37,7 +37,7 @@ struct SliceControllerState {
 
 class SliceHoldupController {
  public:
-  SliceHoldupController(const SceneConfig& config, int particle_material, double start_time);
+  SliceHoldupController(const SceneConfig& config, MaterialId particle_material, double start_time);
   // After each batch of steps: accumulates mdot; at the window's end adjusts the holdup.
   void after_batch(Simulation& sim);
   const std::vector<ControllerWindow>& log() const { return state_.log; }
@@ -50,7 +50,7 @@ class SliceHoldupController {
 
  private:
   SceneConfig cfg_;
-  int material_ = 0;
+  MaterialId material_;
   double window_ = 0.0;  // s
   SizeSampler sizes_;
   std::mt19937_64 rng_;

@@ -79,19 +79,14 @@ CentrecFilmRun::CentrecFilmRun(const FilmCase& c, const FilmState& s, const Cent
     dem::Simulation& sim = *st_->sim;
     // Particles and the wall as two materials (same E, nu; per-pair e, mu, mu_r), as the
     // deck's atom types 1 and 2.
-    const int grain = sim.add_material({c.youngs_modulus, c.poisson_ratio, c.density});
-    const int wall_mat = sim.add_material({c.youngs_modulus, c.poisson_ratio, c.density});
+    const dem::MaterialId grain = sim.add_material({c.youngs_modulus, c.poisson_ratio, c.density});
+    const dem::MaterialId wall_mat = sim.add_material({c.youngs_modulus, c.poisson_ratio, c.density});
     sim.set_interaction(grain, grain, {c.restitution, c.friction, c.rolling_friction});
     sim.set_interaction(grain, wall_mat, {c.restitution, c.wall_friction, c.wall_rolling_friction});
     sim.add_wall(dem::Wall::cylinder({0, 0, 0}, {0, 0, 1}, c.drum_radius, -INFINITY, INFINITY, c.omega(), wall_mat));
     for (const auto& p : s.particles) {
-      dem::ParticleInit in;
-      in.x = {p.x[0], p.x[1], p.x[2]};
-      in.v = {p.v[0], p.v[1], p.v[2]};
-      in.w = {p.w[0], p.w[1], p.w[2]};
-      in.radius = 0.5 * s.diameter;
-      in.material = grain;
-      sim.add_particle(in);
+      sim.add_particle({grain, 0.5 * s.diameter, {p.x[0], p.x[1], p.x[2]}, {p.v[0], p.v[1], p.v[2]},
+                        {p.w[0], p.w[1], p.w[2]}});
     }
     sim.setup();
     sim.step(r.settle_steps);

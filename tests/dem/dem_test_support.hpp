@@ -13,7 +13,7 @@ inline Material paper_material() { return Material{5e6, 0.3, 3560.0}; }
 
 inline double sphere_mass(double r, double rho = 3560.0) { return rho * 4.0 / 3.0 * M_PI * r * r * r; }
 
-// A simulation whose material 0 is the paper's with the given pair interaction (with itself).
+// A simulation without gravity printing nothing; add a material before any particle.
 inline SimulationConfig quiet_config(double dt, Vec3 gravity = {0, 0, 0}) {
   SimulationConfig c;
   c.dt = dt;
@@ -22,9 +22,12 @@ inline SimulationConfig quiet_config(double dt, Vec3 gravity = {0, 0, 0}) {
   return c;
 }
 
-inline void use_paper_material(Simulation& sim, const PairInteraction& p) {
-  // Material 0 already has Material{} = the paper's values; set its self-interaction.
-  sim.set_interaction(0, 0, p);
+// Adds the paper's material with the given interaction with itself (tests whose walls are
+// made of it too use the same interaction for walls).
+inline MaterialId use_paper_material(Simulation& sim, const PairInteraction& p) {
+  const MaterialId m = sim.add_material(paper_material());
+  sim.set_interaction(m, m, p);
+  return m;
 }
 
 // Hertz contact time for two paper particles (or particle-wall: wall = true) at relative speed v.

@@ -25,9 +25,10 @@ inline double film_omega(const FilmScene& s) { return s.rpm * 2.0 * M_PI / 60.0;
 inline void build_film(Simulation& sim, const FilmScene& s, std::size_t n) {
   const double d = 1.2e-3, omega = film_omega(s);
   const double length = s.length > 0.0 ? s.length : std::max(20 * d, n * d * d * d / (0.55 * 2 * M_PI * s.drum_radius * 6 * d));
-  sim.set_interaction(0, 0, PairInteraction{0.46, 0.81, 0.26});
-  const int wall_mat = sim.add_material(Material{5e6, 0.3, 3560.0});
-  sim.set_interaction(0, wall_mat, PairInteraction{0.46, 10000.0, 0.26});
+  const MaterialId grain = sim.add_material(Material{5e6, 0.3, 3560.0});
+  sim.set_interaction(grain, grain, PairInteraction{0.46, 0.81, 0.26});
+  const MaterialId wall_mat = sim.add_material(Material{5e6, 0.3, 3560.0});
+  sim.set_interaction(grain, wall_mat, PairInteraction{0.46, 10000.0, 0.26});
   sim.add_wall(Wall::cylinder({0, 0, 0}, {0, 0, 1}, s.drum_radius, -1.0, length + 1.0, omega, wall_mat));
   if (!s.periodic) {
     sim.add_wall(Wall::disc({0, 0, 0}, {0, 0, 1}, s.drum_radius, 0.0, omega, wall_mat));
@@ -43,7 +44,7 @@ inline void build_film(Simulation& sim, const FilmScene& s, std::size_t n) {
       for (int a = 0; a < around && placed < n; ++a, ++placed) {
         const double phi = 2 * M_PI * (a + 0.5 * (k % 2)) / around;
         const Vec3 x{r * std::cos(phi), r * std::sin(phi), 0.5 * d + 1e-5 + k * pitch};
-        sim.add_particle({x, {-omega * x.y, omega * x.x, 0.0}, {0, 0, omega}, 0.5 * d});
+        sim.add_particle({grain, 0.5 * d, x, {-omega * x.y, omega * x.x, 0.0}, {0, 0, omega}});
       }
     }
   }

@@ -14,11 +14,11 @@ using namespace centrec::dem::testing;
 TEST(BedWeight, BottomWallCarriesTheWeight) {
   const Vec3 g{0, 0, -9.81};
   Simulation sim(quiet_config(0.0, g));  // dt: the advisor's default
-  use_paper_material(sim, PairInteraction{0.2, 0.5, 0.1});
-  const int smooth = sim.add_material(paper_material());
-  sim.set_interaction(0, smooth, PairInteraction{0.2, 0.0, 0.0});
+  const MaterialId grain = use_paper_material(sim, PairInteraction{0.2, 0.5, 0.1});
+  const MaterialId smooth = sim.add_material(paper_material());
+  sim.set_interaction(grain, smooth, PairInteraction{0.2, 0.0, 0.0});
   const double side = 8e-3;
-  const int bottom = sim.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}));
+  const int bottom = sim.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}, grain));
   sim.add_wall(Wall::plane({0, 0, 0}, {1, 0, 0}, smooth));
   sim.add_wall(Wall::plane({side, 0, 0}, {-1, 0, 0}, smooth));
   sim.add_wall(Wall::plane({0, 0, 0}, {0, 1, 0}, smooth));
@@ -30,7 +30,7 @@ TEST(BedWeight, BottomWallCarriesTheWeight) {
       for (int i = 0; i < 6; ++i) {
         // Slightly uneven radii and a shifted lattice so the bed does not crystallise.
         const double r = kRadius * (0.92 + 0.08 * ((i * 7 + j * 3 + k * 5) % 5) / 4.0);
-        sim.add_particle({{0.7e-3 + i * pitch + 0.1e-3 * (k % 2), 0.7e-3 + j * pitch, 0.7e-3 + k * pitch}, {}, {}, r});
+        sim.add_particle({grain, r, {0.7e-3 + i * pitch + 0.1e-3 * (k % 2), 0.7e-3 + j * pitch, 0.7e-3 + k * pitch}, {}, {}});
         weight += sphere_mass(r) * 9.81;
       }
   sim.step(30000);  // settle (~0.25 s)

@@ -41,16 +41,16 @@ double total_energy(const Simulation& sim, Vec3 g) {
 TEST(EnergyConservation, ElasticFrictionlessBoxConservesEnergy) {
   const Vec3 g{0, 0, -9.81};
   Simulation sim(quiet_config(1e-6, g));  // about t_c / 200 at these speeds (2e-6 gives 5.4e-5)
-  use_paper_material(sim, PairInteraction{1.0, 0.0, 0.0});
+  const MaterialId grain = use_paper_material(sim, PairInteraction{1.0, 0.0, 0.0});
   for (int axis = 0; axis < 3; ++axis) {
     Vec3 n{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0};
-    sim.add_wall(Wall::plane({0, 0, 0}, n));
-    sim.add_wall(Wall::plane({kBox, kBox, kBox}, -n));
+    sim.add_wall(Wall::plane({0, 0, 0}, n, grain));
+    sim.add_wall(Wall::plane({kBox, kBox, kBox}, -n, grain));
   }
   const Vec3 starts[] = {{1.2e-3, 1.3e-3, 1.5e-3}, {3.6e-3, 1.1e-3, 2.5e-3}, {2.4e-3, 3.7e-3, 3.6e-3},
                          {1.1e-3, 3.5e-3, 2.2e-3}};
   const Vec3 vels[] = {{0.3, 0.1, -0.2}, {-0.2, 0.25, 0.1}, {0.1, -0.3, 0.2}, {0.2, -0.1, -0.3}};
-  for (int k = 0; k < 4; ++k) sim.add_particle({starts[k], vels[k], {100.0 * k, -50.0, 30.0}, kRadius});
+  for (int k = 0; k < 4; ++k) sim.add_particle({grain, kRadius, starts[k], vels[k], {100.0 * k, -50.0, 30.0}});
   sim.setup();
   const double e0 = total_energy(sim, g);
   double worst = 0.0;

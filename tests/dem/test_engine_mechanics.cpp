@@ -25,18 +25,17 @@ namespace {
 std::array<Vec3, 6> held_by_history(bool churn, std::size_t* rebuilds) {
   const double th = std::atan(0.3);
   Simulation sim(quiet_config(2e-6, {0.0, 9.81 * std::sin(th), -9.81 * std::cos(th)}));
-  use_paper_material(sim, PairInteraction{0.46, 0.5, 1000.0});
-  sim.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}));
+  const MaterialId grain = use_paper_material(sim, PairInteraction{0.46, 0.5, 1000.0});
+  sim.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}, grain));
   // Motion::drum with drum omega = 0: fixed in place.
-  const std::int64_t q = sim.add_particle({{0.01 - kRadius, 0, 0.02}, {}, {}, kRadius, 0, Motion::drum});
-  sim.add_particle({{0.01 + kRadius, 0, 0.02}, {}, {}, kRadius, 0, Motion::drum});
-  const std::int64_t p = sim.add_particle({{0.01, 0, 0.02 + std::sqrt(3.0) * kRadius - 1e-6}, {}, {}, kRadius});
-  const std::int64_t s = sim.add_particle({{0.02, 0, kRadius - 1e-6}, {}, {}, kRadius});
+  const std::int64_t q = sim.add_particle({grain, kRadius, {0.01 - kRadius, 0, 0.02}, {}, {}, Motion::drum});
+  sim.add_particle({grain, kRadius, {0.01 + kRadius, 0, 0.02}, {}, {}, Motion::drum});
+  const std::int64_t p = sim.add_particle({grain, kRadius, {0.01, 0, 0.02 + std::sqrt(3.0) * kRadius - 1e-6}, {}, {}});
+  const std::int64_t s = sim.add_particle({grain, kRadius, {0.02, 0, kRadius - 1e-6}, {}, {}});
   std::vector<std::int64_t> dummies;
   for (int step = 0; step < 4000; ++step) {
     if (churn && step % 20 == 0) {
-      dummies.push_back(sim.add_particle({{-0.05 - 0.002 * (step % 7), 0.01 * dummies.size(), 0.05}, {}, {}, kRadius, 0,
-                                          Motion::drum}));
+      dummies.push_back(sim.add_particle({grain, kRadius, {-0.05 - 0.002 * (step % 7), 0.01 * dummies.size(), 0.05}, {}, {}, Motion::drum}));
       if (dummies.size() > 3) {
         sim.remove_particles({dummies.front()});
         dummies.erase(dummies.begin());
@@ -72,7 +71,8 @@ TEST(EngineMechanics, TangentialHistorySurvivesRebuildsSortsInsertAndRemove) {
 
 TEST(EngineMechanics, UnstableTimeStepIsRefused) {
   Simulation sim(quiet_config(1e-3));
-  sim.add_particle({{0, 0, 0}, {}, {}, kRadius});
+  const MaterialId grain = use_paper_material(sim, PairInteraction{});
+  sim.add_particle({grain, kRadius, {0, 0, 0}, {}, {}});
   const TimeStepAdvice a = sim.time_step_advice();
   std::printf("advisor for the paper's particle: %s\n", a.report().c_str());
   // Rayleigh time by hand: pi R sqrt(rho/G)/(0.1631 nu + 0.8766), G = E/(2(1+nu)).
@@ -90,14 +90,16 @@ TEST(EngineMechanics, UnstableTimeStepIsRefused) {
   }
   // The paper's dt = 1e-5 s is accepted.
   Simulation ok(quiet_config(1e-5));
-  ok.add_particle({{0, 0, 0}, {}, {}, kRadius});
+  const MaterialId ok_grain = use_paper_material(ok, PairInteraction{});
+  ok.add_particle({ok_grain, kRadius, {0, 0, 0}, {}, {}});
   EXPECT_NO_THROW(ok.setup());
 }
 
 TEST(EngineMechanics, BlowUpNamesParticleStepAndCause) {
   Simulation sim(quiet_config(1e-6));
-  sim.add_particle({{0, 0, 0}, {}, {}, kRadius});
-  sim.add_particle({{1.2 * kRadius, 0, 0}, {}, {}, kRadius});  // inserted with 80 % overlap
+  const MaterialId grain = use_paper_material(sim, PairInteraction{});
+  sim.add_particle({grain, kRadius, {0, 0, 0}, {}, {}});
+  sim.add_particle({grain, kRadius, {1.2 * kRadius, 0, 0}, {}, {}});  // inserted with 80 % overlap
   try {
     sim.step(10);
     FAIL() << "no blow-up detected";
@@ -112,9 +114,10 @@ TEST(EngineMechanics, BlowUpNamesParticleStepAndCause) {
   }
   // A particle shot at a wall far faster than the advised impact speed.
   Simulation fast(quiet_config(1e-5));
-  fast.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}));
-  const std::int64_t id = fast.add_particle({{0, 0, 2 * kRadius}, {0, 0, -50.0}, {}, kRadius});
-  fast.add_particle({{1, 1, 1}, {}, {}, kRadius});
+  const MaterialId fast_grain = use_paper_material(fast, PairInteraction{});
+  fast.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}, fast_grain));
+  const std::int64_t id = fast.add_particle({fast_grain, kRadius, {0, 0, 2 * kRadius}, {0, 0, -50.0}, {}});
+  fast.add_particle({fast_grain, kRadius, {1, 1, 1}, {}, {}});
   try {
     fast.step(100);
     FAIL() << "no blow-up detected";
@@ -133,10 +136,10 @@ TEST(EngineMechanics, PeriodicZUsesTheMinimumImage) {
   cfg.z_lo = 0.0;
   cfg.z_hi = 5e-3;
   Simulation sim(cfg);
-  use_paper_material(sim, PairInteraction{0.46, 0.5, 0.1});
+  const MaterialId grain = use_paper_material(sim, PairInteraction{0.46, 0.5, 0.1});
   // 1.4 mm apart through the boundary (3.6 mm apart inside the box), approaching through it.
-  const std::int64_t a = sim.add_particle({{0, 0, 0.7e-3}, {0, 0, -0.5}, {}, kRadius});
-  const std::int64_t b = sim.add_particle({{0, 0, 4.3e-3}, {0, 0, 0.5}, {}, kRadius});
+  const std::int64_t a = sim.add_particle({grain, kRadius, {0, 0, 0.7e-3}, {0, 0, -0.5}, {}});
+  const std::int64_t b = sim.add_particle({grain, kRadius, {0, 0, 4.3e-3}, {0, 0, 0.5}, {}});
   bool touched = false;
   for (int s = 0; s < 5000; ++s) {
     sim.step(1);
@@ -159,7 +162,8 @@ TEST(EngineMechanics, PeriodicZUsesTheMinimumImage) {
   SimulationConfig bad = cfg;
   bad.z_hi = 3e-3;
   Simulation short_period(bad);
-  short_period.add_particle({{0, 0, 1e-3}, {}, {}, kRadius});
+  const MaterialId short_grain = use_paper_material(short_period, PairInteraction{});
+  short_period.add_particle({short_grain, kRadius, {0, 0, 1e-3}, {}, {}});
   EXPECT_THROW(short_period.step(1), std::invalid_argument);
 }
 

@@ -21,14 +21,14 @@ struct ImpactResult {
 ImpactResult head_on(double e, double v, bool wall) {
   const double tc = paper_contact_time(v, wall);
   Simulation sim(quiet_config(tc / 1000.0));
-  use_paper_material(sim, PairInteraction{e, 0.5, 0.0});
+  const MaterialId grain = use_paper_material(sim, PairInteraction{e, 0.5, 0.0});
   const double gap = 0.05 * kRadius;
   if (wall) {
-    sim.add_wall(Wall::plane({0, 0, 0}, {1, 0, 0}));
-    sim.add_particle({{kRadius + gap, 0, 0}, {-v, 0, 0}, {}, kRadius});
+    sim.add_wall(Wall::plane({0, 0, 0}, {1, 0, 0}, grain));
+    sim.add_particle({grain, kRadius, {kRadius + gap, 0, 0}, {-v, 0, 0}, {}});
   } else {
-    sim.add_particle({{-kRadius - 0.5 * gap, 0, 0}, {0.5 * v, 0, 0}, {}, kRadius});
-    sim.add_particle({{kRadius + 0.5 * gap, 0, 0}, {-0.5 * v, 0, 0}, {}, kRadius});
+    sim.add_particle({grain, kRadius, {-kRadius - 0.5 * gap, 0, 0}, {0.5 * v, 0, 0}, {}});
+    sim.add_particle({grain, kRadius, {kRadius + 0.5 * gap, 0, 0}, {-0.5 * v, 0, 0}, {}});
   }
   long in_contact = 0;
   bool touched = false;

@@ -20,13 +20,13 @@ double downslope_acceleration(double tan_theta, double mu, double mu_r) {
   const double g = 9.81, th = std::atan(tan_theta);
   const Vec3 gravity{g * std::sin(th), 0.0, -g * std::cos(th)};  // slope = the plane z = 0, down = +x
   Simulation sim(quiet_config(2e-6, gravity));
-  use_paper_material(sim, PairInteraction{0.3, mu, mu_r});
-  sim.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}));
+  const MaterialId grain = use_paper_material(sim, PairInteraction{0.3, mu, mu_r});
+  sim.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}, grain));
   // Start at the static Hertz overlap under the normal load so the sphere does not bounce.
   const double m = sphere_mass(kRadius), E = 5e6 / (1 - 0.09);
   const double load = m * g * std::cos(th);
   const double delta = std::pow(load / ((4.0 / 3.0) * E * std::sqrt(kRadius)), 2.0 / 3.0);
-  sim.add_particle({{0, 0, kRadius - delta}, {}, {}, kRadius});
+  sim.add_particle({grain, kRadius, {0, 0, kRadius - delta}, {}, {}});
   sim.step(25000);  // 0.05 s
   const double x0 = sim.positions()[0].x, v0 = sim.velocities()[0].x;
   sim.step(50000);  // 0.1 s

@@ -32,9 +32,9 @@ struct Rebound {
 
 Rebound oblique_impact(double e, double mu, double vn, double vt) {
   Simulation sim(quiet_config(paper_contact_time(vn, true) / 400.0));
-  use_paper_material(sim, PairInteraction{e, mu, 0.0});
-  sim.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}));
-  sim.add_particle({{0, 0, kRadius * 1.01}, {vt, 0, -vn}, {}, kRadius});
+  const MaterialId grain = use_paper_material(sim, PairInteraction{e, mu, 0.0});
+  sim.add_wall(Wall::plane({0, 0, 0}, {0, 0, 1}, grain));
+  sim.add_particle({grain, kRadius, {0, 0, kRadius * 1.01}, {vt, 0, -vn}, {}});
   bool touched = false;
   double jabs = 0.0;
   for (int s = 0; s < 100000; ++s) {

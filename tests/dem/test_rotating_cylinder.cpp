@@ -26,9 +26,9 @@ CoRotation spin_up(WallRolling mode) {
   SimulationConfig cfg = quiet_config(1e-5, {0, 0, 0});
   cfg.wall_rolling = mode;
   Simulation sim(cfg);
-  use_paper_material(sim, PairInteraction{0.46, 0.81, mu_r});
-  const int wall_mat = sim.add_material(paper_material());
-  sim.set_interaction(0, wall_mat, PairInteraction{0.46, 10000.0, mu_r});
+  const MaterialId grain = use_paper_material(sim, PairInteraction{0.46, 0.81, mu_r});
+  const MaterialId wall_mat = sim.add_material(paper_material());
+  sim.set_interaction(grain, wall_mat, PairInteraction{0.46, 10000.0, mu_r});
   const int drum = sim.add_wall(Wall::cylinder({0, 0, 0}, {0, 0, 1}, R, -1.0, 1.0, omega, wall_mat));
   // Particles touching the wall, lagging it by 30 % and not spinning (as fed particles
   // arrive); their centrifugal load presses them on the wall, whose friction drags them along.
@@ -37,7 +37,7 @@ CoRotation spin_up(WallRolling mode) {
   for (int k = 0; k < n; ++k) {
     const double phi = 2 * M_PI * k / n, rho = R - kRadius;
     const Vec3 x{rho * std::cos(phi), rho * std::sin(phi), 1e-3 * (k % 3)};
-    sim.add_particle({x, {-0.7 * omega * x.y, 0.7 * omega * x.x, 0.0}, {}, kRadius});
+    sim.add_particle({grain, kRadius, x, {-0.7 * omega * x.y, 0.7 * omega * x.x, 0.0}, {}});
   }
   sim.step(40000);  // 0.4 s, about one turn
   CoRotation out{0, 0, 0};

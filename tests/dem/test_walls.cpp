@@ -11,15 +11,16 @@ using namespace centrec::dem;
 using namespace centrec::dem::testing;
 
 TEST(Walls, GeometryOfPlaneCylinderAndAnnulus) {
+  const MaterialId grain(0);  // geometry only: no engine
   double dist;
   Vec3 n, p;
-  const Wall plane = Wall::plane({0, 0, 1}, {0, 0, 2});
+  const Wall plane = Wall::plane({0, 0, 1}, {0, 0, 2}, grain);
   ASSERT_TRUE(wall_geometry(plane, {3, 4, 1.5}, dist, n, p));
   EXPECT_DOUBLE_EQ(dist, 0.5);
   EXPECT_EQ(n, (Vec3{0, 0, 1}));
   EXPECT_FALSE(wall_geometry(plane, {0, 0, 0.5}, dist, n, p));  // behind: one-sided
 
-  const Wall cyl = Wall::cylinder({0, 0, 0}, {0, 0, 1}, 0.06, 0.0, 0.1, 10.0);
+  const Wall cyl = Wall::cylinder({0, 0, 0}, {0, 0, 1}, 0.06, 0.0, 0.1, 10.0, grain);
   ASSERT_TRUE(wall_geometry(cyl, {0.05, 0, 0.05}, dist, n, p));
   EXPECT_NEAR(dist, 0.01, 1e-15);
   EXPECT_EQ(n, (Vec3{-1, 0, 0}));
@@ -28,23 +29,23 @@ TEST(Walls, GeometryOfPlaneCylinderAndAnnulus) {
   EXPECT_FALSE(wall_geometry(cyl, {0.05, 0, 0.2}, dist, n, p));              // beyond the axial extent
 
   // Annular weir of inner radius 0.05 in the plane z = 0.1.
-  const Wall lip = Wall::disc({0, 0, 0.1}, {0, 0, 1}, 0.06, 0.05, 10.0);
+  const Wall lip = Wall::disc({0, 0, 0.1}, {0, 0, 1}, 0.06, 0.05, 10.0, grain);
   ASSERT_TRUE(wall_geometry(lip, {0.055, 0, 0.099}, dist, n, p));  // on the face, from below
   EXPECT_NEAR(dist, 0.001, 1e-15);
   EXPECT_NEAR(n.z, -1.0, 1e-15);
   ASSERT_TRUE(wall_geometry(lip, {0.049, 0, 0.1005}, dist, n, p));  // over the inner rim
   EXPECT_NEAR(dist, std::hypot(0.001, 0.0005), 1e-15);
   EXPECT_NEAR(norm(p - Vec3{0.05, 0, 0.1}), 0.0, 1e-15);
-  EXPECT_THROW(check_wall(Wall::disc({0, 0, 0}, {0, 0, 1}, 0.05, 0.06, 0.0)), std::invalid_argument);
+  EXPECT_THROW(check_wall(Wall::disc({0, 0, 0}, {0, 0, 1}, 0.05, 0.06, 0.0, grain)), std::invalid_argument);
 }
 
 TEST(Walls, ParticleBouncesOffAnnulusFaceAndFallsThroughItsHole) {
   Simulation sim(quiet_config(paper_contact_time(1.0, true) / 200.0));
-  use_paper_material(sim, PairInteraction{0.9, 0.0, 0.0});
-  const int lip = sim.add_wall(Wall::disc({0, 0, 0}, {0, 0, 1}, 0.06, 0.05, 0.0));
+  const MaterialId grain = use_paper_material(sim, PairInteraction{0.9, 0.0, 0.0});
+  const int lip = sim.add_wall(Wall::disc({0, 0, 0}, {0, 0, 1}, 0.06, 0.05, 0.0, grain));
   // Falling onto the face (inside the annulus) and onto the hole (misses the plate).
-  const std::int64_t hit = sim.add_particle({{0.055, 0, 2 * kRadius}, {0, 0, -1.0}, {}, kRadius});
-  const std::int64_t miss = sim.add_particle({{0.0, 0, 2 * kRadius}, {0, 0, -1.0}, {}, kRadius});
+  const std::int64_t hit = sim.add_particle({grain, kRadius, {0.055, 0, 2 * kRadius}, {0, 0, -1.0}, {}});
+  const std::int64_t miss = sim.add_particle({grain, kRadius, {0.0, 0, 2 * kRadius}, {0, 0, -1.0}, {}});
   double peak = 0.0;
   for (int s = 0; s < 800; ++s) {
     sim.step(1);
@@ -64,8 +65,9 @@ TEST(Walls, GluedParticlesTurnRigidlyWithTheDrum) {
   SimulationConfig cfg = quiet_config(1e-5, {0, -9.81, 0});
   cfg.drum.omega = 160.08 * 2 * M_PI / 60;
   Simulation sim(cfg);
+  const MaterialId grain = use_paper_material(sim, PairInteraction{});
   const Vec3 x0{0.0594, 0.0, 0.01};
-  sim.add_particle({x0, {}, {}, kRadius, 0, Motion::drum});
+  sim.add_particle({grain, kRadius, x0, {}, {}, Motion::drum});
   const long steps = std::lround(2 * M_PI / cfg.drum.omega / 1e-5);  // ~ one turn
   sim.step(steps);
   const double angle = cfg.drum.omega * 1e-5 * static_cast<double>(steps);

@@ -36,7 +36,7 @@ TEST(SliceController, ActuatorsInsertWithoutOverlapAndRemoveTheSurface) {
   auto& sim = scene.simulation();
   scene.advance(0.02);
   const double period = scene.config().slice.length, d = scene.config().particle.diameter;
-  SliceHoldupController ctl(scene.config(), 1, sim.time());
+  SliceHoldupController ctl(scene.config(), scene.particle_material(), sim.time());
   const std::int64_t before = scene.free_particles();
   std::int64_t first_new = 0;
   for (std::int64_t id : sim.ids()) first_new = std::max(first_new, id + 1);
@@ -63,7 +63,7 @@ TEST(SliceController, ActuatorsInsertWithoutOverlapAndRemoveTheSurface) {
   EXPECT_GE(innermost_left, deepest_removed);
 
   // A restored controller continues the same random sequence.
-  SliceHoldupController a(scene.config(), 1, 0.0), b(scene.config(), 1, 0.0);
+  SliceHoldupController a(scene.config(), scene.particle_material(), 0.0), b(scene.config(), scene.particle_material(), 0.0);
   b.restore(a.state());
   EXPECT_EQ(a.state().rng, b.state().rng);
 }
