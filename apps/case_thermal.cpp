@@ -188,7 +188,7 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   cav.enabled = rad.choice("model", "cavity", {"cavity", "open_surface"}) == "cavity";
   if (cav.enabled) {
     cav.aperture_diameter = rad.number("aperture_diameter", 0.0, Range::closed(0.0, 100.0), "m (0 = drum diameter)");
-    cav.rings = static_cast<int>(rad.integer("rings", 50, 1, 2000));
+    cav.rings = static_cast<int>(rad.integer("rings", 25, 1, 2000));
     cav.wall_absorptance = rad.number("wall_absorptance", cav.wall_absorptance, Range::open_closed(0.0, 1.0));
     cav.wall_emissivity = rad.number("wall_emissivity", cav.wall_emissivity, Range::open_closed(0.0, 1.0));
     cav.convection_correlation = rad.choice("convection", "correlation", {"correlation", "h_conv"}) == "correlation";

@@ -6,9 +6,8 @@
 
 namespace centrec::thermal {
 
-namespace {
-// Inverse of a dense row-major n x n matrix by Gauss-Jordan elimination with partial
-// pivoting (the enclosure matrix is diagonally dominant for reflectances < 1).
+// Gauss-Jordan elimination with partial pivoting (the enclosure matrix is diagonally
+// dominant for reflectances < 1).
 std::vector<double> dense_inverse(std::vector<double> A, int n) {
   std::vector<double> X(static_cast<std::size_t>(n) * n, 0.0);
   for (int i = 0; i < n; ++i) X[static_cast<std::size_t>(i) * n + i] = 1.0;
@@ -31,7 +30,6 @@ std::vector<double> dense_inverse(std::vector<double> A, int n) {
   }
   return X;
 }
-}  // namespace
 
 CavityEnclosure::CavityEnclosure(CavityViewFactors vf, std::vector<double> reflectance)
     : vf_(std::move(vf)), rho_(std::move(reflectance)) {

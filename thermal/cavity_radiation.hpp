@@ -47,6 +47,10 @@ class CavityEnclosure {
   std::vector<double> inverse_;  // (I - diag(rho) Fss)^-1, row-major n x n
 };
 
+// Inverse of a dense row-major n x n matrix (Gauss-Jordan with partial pivoting); throws
+// std::runtime_error if singular.
+std::vector<double> dense_inverse(std::vector<double> A, int n);
+
 // Apparent (effective) emissivity of an isothermal cavity of wall emissivity eps (all
 // surfaces but the aperture), surroundings at 0 K: the power leaving through the aperture
 // over A_ap sigma T^4.

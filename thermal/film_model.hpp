@@ -36,7 +36,7 @@ struct SurfaceConditions {
 struct CavitySettings {
   bool enabled = false;              // false: the open-surface model with loss factor F
   double aperture_diameter = 0.0;    // m; 0 = the drum diameter (open front end, no annulus)
-  int rings = 50;                    // axial film sections of the enclosure (columns grouped)
+  int rings = 25;                    // axial film sections of the enclosure (columns grouped)
   double wall_absorptance = 0.3;     // solar absorptance of the back plate and front annulus
   double wall_emissivity = 0.8;      // their thermal emissivity
   bool convection_correlation = true;  // Siebers & Kraabel / Stine & McDonald; false: surface.h_conv

@@ -397,6 +397,58 @@ double FilmOperator::steady_residual(double t, const double* y) {
   return sum / scale;
 }
 
+int FilmOperator::low_rank_jacobian(double t, const double* y, std::vector<double>& U, std::vector<double>& V) {
+  if (!cavity_) return 0;
+  // Linearisation of the exchange: a top cell's surface temperature T_s moves its ring's
+  // emissive power E_k (V: dE_k / dT_top), the irradiation of every surface follows
+  // dH = G dE_rings with the walls in equilibrium (dE_w = b_w dH_w, so
+  // G = (I - M_w B_w)^-1 M_rings), and a top cell's residual moves with its ring's H (U).
+  const long n = size();
+  for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
+  const Inputs in = inputs_at(t);
+  update_cavity(y, in);
+  const Cavity& c = *cavity_;
+  const int nz = grid_.nz, nxi = grid_.nxi, nr = c.rings, ns = c.n;
+  const double eps = model_.material.epsilon, sg = kStefanBoltzmann;
+  const double U_w = model_.wall.adiabatic ? 0.0 : model_.wall.U_w;
+  // A = I - M_w B_w over all surfaces (only wall columns of M), then G = A^-1 M_rings.
+  std::vector<double> A(static_cast<std::size_t>(ns) * ns, 0.0);
+  for (int k = 0; k < ns; ++k) {
+    A[static_cast<std::size_t>(k) * ns + k] = 1.0;
+    for (int w = nr; w < ns; ++w) {
+      const double Tw = c.T_wall[w - nr], ew = c.eps[w];
+      const double b = 4 * sg * Tw * Tw * Tw * ew / (4 * ew * sg * Tw * Tw * Tw + c.h + U_w);
+      A[static_cast<std::size_t>(k) * ns + w] -= c.M[static_cast<std::size_t>(k) * ns + w] * b;
+    }
+  }
+  const std::vector<double> Ainv = dense_inverse(std::move(A), ns);
+  std::vector<double> G(static_cast<std::size_t>(ns) * nr, 0.0);  // row-major ns x nr
+  for (int k = 0; k < ns; ++k)
+    for (int l = 0; l < ns; ++l) {
+      const double a = Ainv[static_cast<std::size_t>(k) * ns + l];
+      if (a == 0.0) continue;
+      for (int j = 0; j < nr; ++j) G[static_cast<std::size_t>(k) * nr + j] += a * c.M[static_cast<std::size_t>(l) * ns + j];
+    }
+  U.assign(static_cast<std::size_t>(n) * nr, 0.0);
+  V.assign(static_cast<std::size_t>(n) * nr, 0.0);
+  for (int i = 0; i < nz; ++i) {
+    const int top = i * nxi + nxi - 1, k = c.ring_of[i];
+    const SurfaceState st = surface(i, y[top], props_[top].kn, in);
+    const double Ts = st.T_s, rad = 4 * eps * sg * Ts * Ts * Ts;
+    double dTs_dTp = 1.0, dflux_dH = eps;
+    if (!grid_.lumped) {
+      const double kk = 2.0 * props_[top].kn / grid_.deta[i], den = kk + rad + c.h;
+      dTs_dTp = kk / den;
+      dflux_dH = kk * eps / den;
+    }
+    const int members = c.ring_begin[k + 1] - c.ring_begin[k];
+    V[static_cast<std::size_t>(k) * n + top] = 4 * sg * Ts * Ts * Ts * dTs_dTp / members;
+    const double scale = dflux_dH * grid_.dz / props_[top].capacity;
+    for (int j = 0; j < nr; ++j) U[static_cast<std::size_t>(j) * n + top] = scale * G[static_cast<std::size_t>(k) * nr + j];
+  }
+  return nr;
+}
+
 double FilmOperator::time_scale() const {
   // Residence time = hold-up / mass flux, or for a resting film the conduction time
   // across it at the inlet state.

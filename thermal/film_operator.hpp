@@ -80,6 +80,8 @@ class FilmOperator : public OdeSystem {
   bool jacobian(double t, const double* y, const double* fy, const BandEntrySink& sink) override;
   double steady_residual(double t, const double* y) override;
   double time_scale() const override;
+  // Cavity model: the radiation exchange between rings, U V^T with one column per ring.
+  int low_rank_jacobian(double t, const double* y, std::vector<double>& U, std::vector<double>& V) override;
 
   // When frozen, the flux and flow time factors are taken at t = 0 whatever t is given
   // (a steady state for the initial operating point).
