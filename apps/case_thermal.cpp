@@ -112,7 +112,17 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
       r.fail("table_file", e.what());
     }
   }
-  m.surface.absorb_depth_layers = r.number("absorb_depth_layers", 0.0, Range::closed(0.0, 20.0), "particle diameters");
+  // Solar absorption: Beer-Lambert below the surface (default; depth in particle diameters,
+  // by default from the bed's solid fraction, thermal/film_model.hpp), uniform over n layers,
+  // or at the surface.
+  const std::string absorption =
+      r.choice("absorption", r.has("absorb_depth_layers") ? "layers" : "extinction", {"extinction", "layers", "surface"});
+  if (absorption == "layers")
+    m.surface.absorb_depth_layers = r.number("absorb_depth_layers", 0.0, Range::closed(0.0, 20.0), "particle diameters");
+  if (absorption == "extinction")
+    m.surface.extinction_depth_d = r.number("extinction_depth_d", -1.0, Range::closed(-1.0, 20.0), "particle diameters");
+  if (m.surface.extinction_depth_d == 0.0 && absorption == "extinction")
+    r.fail("extinction_depth_d", "must be > 0 (or omitted for the value from the solid fraction)");
   m.flux_time = read_time_factor(r.child("time"));
   r.finish();
 }
@@ -173,8 +183,23 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
     m.heat.cp_constant = hc.required_number("cp", Range::positive(), "J/(kg K)");
   hc.finish();
   read_flux(t.child("flux"), case_dir, m);
+  MapReader rad = t.child("radiation");
+  th::CavitySettings& cav = m.cavity;
+  cav.enabled = rad.choice("model", "cavity", {"cavity", "open_surface"}) == "cavity";
+  if (cav.enabled) {
+    cav.aperture_diameter = rad.number("aperture_diameter", 0.0, Range::closed(0.0, 100.0), "m (0 = drum diameter)");
+    cav.rings = static_cast<int>(rad.integer("rings", 25, 1, 2000));
+    cav.wall_absorptance = rad.number("wall_absorptance", cav.wall_absorptance, Range::open_closed(0.0, 1.0));
+    cav.wall_emissivity = rad.number("wall_emissivity", cav.wall_emissivity, Range::open_closed(0.0, 1.0));
+    cav.convection_correlation = rad.choice("convection", "correlation", {"correlation", "h_conv"}) == "correlation";
+    cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg") * 3.14159265358979323846 / 180.0;
+  }
+  rad.finish();
   MapReader s = t.child("surface");
-  m.surface.loss_factor = s.number("loss_factor", 1.0, Range::closed(0.0, 1.0));
+  if (cav.enabled && s.has("loss_factor"))
+    s.fail("loss_factor", "applies to the open-surface model only (thermal.radiation.model: open_surface); the "
+                          "cavity model computes what the cavity returns");
+  m.surface.loss_factor = cav.enabled ? 1.0 : s.number("loss_factor", 1.0, Range::closed(0.0, 1.0));
   m.surface.T_env = s.number("T_env", 300.0, kTemperature, "K");
   m.surface.h_conv = s.number("h_conv", 10.0, Range::closed(0.0, 1e4), "W/(m2 K)");
   m.surface.T_air = s.number("T_air", 300.0, kTemperature, "K");

@@ -9,6 +9,7 @@
 #include "coupled_output.hpp"
 #include "coupled_run.hpp"
 #include "summary_json.hpp"
+#include "thermal_output.hpp"
 
 namespace centrec::cli {
 
@@ -99,6 +100,7 @@ int cmd_run(const Args& args) {
                 r.conservation.max_cylindrical_error);
   std::printf("  outlet temperature %.2f K (%.2f C) from %.2f K, efficiency %.4f, mdot %.4g kg/s\n", b.T_out,
               b.T_out - 273.15, r.thermal.model.T_in, b.efficiency, b.mass_flow);
+  print_receiver_report(r.thermal, b);
   std::printf("  k_eff %.4g W/(m K) = bed %.4g + radiation %.4g + mixing %.4g\n", k["k_eff"].get<double>(),
               k["bed_conduction"].get<double>(), k["radiation"].get<double>(), k["mixing"].get<double>());
   std::printf("  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote %s/{summary.json,results.h5,film.h5}\n",

@@ -1,5 +1,7 @@
 #include "thermal_output.hpp"
 
+#include <cstdio>
+
 #include "code_version.hpp"
 #include "film_field_h5.hpp"
 #include "h5_file.hpp"
@@ -23,6 +25,31 @@ nlohmann::json balance_json(const thermal::FilmBalance& b) {
           {"wall", b.wall},               {"carried_by_particles", b.carried},
           {"inlet_conduction", b.inlet_conduction}, {"storage_rate", b.storage},
           {"balance_residual", b.residual}};
+}
+
+// The receiver's power flow (W): what enters through the aperture and where it goes.
+nlohmann::json receiver_json(const ThermalCase& c, const thermal::FilmBalance& b) {
+  const double P = b.aperture_power;
+  nlohmann::json j = {{"radiation_model", c.model.cavity.enabled ? "cavity" : "open_surface"},
+                      {"aperture_power_W", P},
+                      {"carried_W", b.carried},
+                      {"reflected_loss_W", b.reflected_loss},
+                      {"emitted_loss_W", b.emitted_loss},
+                      {"convective_loss_W", b.convected + b.walls_convected},
+                      {"wall_loss_W", b.wall + b.walls_insulation},
+                      {"inlet_conduction_W", b.inlet_conduction},
+                      {"storage_rate_W", b.storage},
+                      {"efficiency", b.efficiency},
+                      {"h_convection_W_m2K", b.h_cavity},
+                      {"balance_residual_W", b.receiver_residual},
+                      {"balance_residual_relative", P > 0 ? b.receiver_residual / P : 0.0}};
+  if (c.model.cavity.enabled) {
+    j["cavity_walls_convective_loss_W"] = b.walls_convected;
+    j["cavity_walls_insulation_loss_W"] = b.walls_insulation;
+  } else {
+    j["loss_factor"] = c.model.surface.loss_factor;
+  }
+  return j;
 }
 
 // One named column of a table of records, for writing records as 1D datasets.
@@ -97,8 +124,20 @@ void write_thermal_groups(io::H5File& f, const ThermalCase& c, const ThermalRun&
       {"mixing", "W/(m K)", [](const auto& s) { return s.mixing; }},
       {"moving_thickness", "m", [](const auto& s) { return s.moving_thickness; }}};
   write_columns(f, "/steady/keff/", r.keff, keff_columns);
+  if (!fl.cavity_T.empty()) {
+    // Enclosure surfaces: rings (z = 0 .. L), back plate, front annulus (if any).
+    f.write("/steady/cavity/T", fl.cavity_T, "K");
+    f.write("/steady/cavity/solar_irradiation", fl.cavity_solar_irradiation, "W/m2");
+    f.write("/steady/cavity/thermal_irradiation", fl.cavity_thermal_irradiation, "W/m2");
+  }
   f.set_attribute("/steady", "T_out_K", r.balance.T_out);
   f.set_attribute("/steady", "efficiency", r.balance.efficiency);
+  f.set_attribute("/steady", "aperture_power_W", r.balance.aperture_power);
+  f.set_attribute("/steady", "reflected_loss_W", r.balance.reflected_loss);
+  f.set_attribute("/steady", "emitted_loss_W", r.balance.emitted_loss);
+  f.set_attribute("/steady", "convective_loss_W", r.balance.convected + r.balance.walls_convected);
+  f.set_attribute("/steady", "wall_loss_W", r.balance.wall + r.balance.walls_insulation);
+  f.set_attribute("/steady", "receiver_balance_residual_W", r.balance.receiver_residual);
   if (r.has_transient) {
     const Column<thermal::TransientSample> series[] = {
         {"t", "s", [](const auto& s) { return s.t; }},
@@ -108,6 +147,10 @@ void write_thermal_groups(io::H5File& f, const ThermalCase& c, const ThermalRun&
         {"convected", "W", [](const auto& s) { return s.balance.convected; }},
         {"wall", "W", [](const auto& s) { return s.balance.wall; }},
         {"carried", "W", [](const auto& s) { return s.balance.carried; }},
+        {"aperture_power", "W", [](const auto& s) { return s.balance.aperture_power; }},
+        {"reflected_loss", "W", [](const auto& s) { return s.balance.reflected_loss; }},
+        {"emitted_loss", "W", [](const auto& s) { return s.balance.emitted_loss; }},
+        {"efficiency", "1", [](const auto& s) { return s.balance.efficiency; }},
         {"storage_rate", "W", [](const auto& s) { return s.balance.storage; }},
         {"T_surface_max", "K", [](const auto& s) { return s.T_surface_max; }},
         {"mass_flow", "kg/s", [](const auto& s) { return s.balance.mass_flow; }}};
@@ -136,6 +179,7 @@ nlohmann::json thermal_summary(const ThermalCase& c, const ThermalRun& r) {
   j["mass_flow_kg_s"] = b.mass_flow;
   j["efficiency"] = b.efficiency;
   j["powers_W"] = balance_json(b);
+  j["receiver"] = receiver_json(c, b);
   j["balance_residual_relative"] = b.absorbed > 0 ? b.residual / b.absorbed : 0.0;
   j["mass_flux_max_correction"] = g.max_flux_correction;
   nlohmann::json k;
@@ -179,6 +223,19 @@ nlohmann::json thermal_summary(const ThermalCase& c, const ThermalRun& r) {
     j["solver"]["transient"]["wall_time_s"] = r.transient_seconds;
   }
   return j;
+}
+
+void print_receiver_report(const ThermalCase& c, const thermal::FilmBalance& b) {
+  const double P = b.aperture_power;
+  auto pct = [P](double x) { return P > 0 ? 100.0 * x / P : 0.0; };
+  std::printf("  receiver (%s): aperture %.6g W -> carried %.6g W, efficiency %.4f (carried / aperture power)\n",
+              c.model.cavity.enabled ? "cavity" : "open surface", P, b.carried, b.efficiency);
+  std::printf("  losses: reflected %.4g W (%.2f %%), emitted %.4g W (%.2f %%) through the %s, convective %.4g W "
+              "(%.2f %%, h %.3g W/(m2 K)), wall %.4g W (%.2f %%); balance residual %.2e of aperture power\n",
+              b.reflected_loss, pct(b.reflected_loss), b.emitted_loss, pct(b.emitted_loss),
+              c.model.cavity.enabled ? "aperture" : "open surface", b.convected + b.walls_convected,
+              pct(b.convected + b.walls_convected), b.h_cavity, b.wall + b.walls_insulation,
+              pct(b.wall + b.walls_insulation), P > 0 ? b.receiver_residual / P : 0.0);
 }
 
 }  // namespace centrec::cli

@@ -15,5 +15,8 @@ void write_thermal_h5(const std::string& path, const ThermalCase& c, const Therm
 // The same content into an open file (root attributes, /grid, /steady, /transient, /film).
 void write_thermal_groups(io::H5File& f, const ThermalCase& c, const ThermalRun& r);
 nlohmann::json thermal_summary(const ThermalCase& c, const ThermalRun& r);
+// Two printed lines: the receiver's power flow (aperture power, carried, losses through the
+// aperture, convective and wall losses, receiver efficiency, balance residual).
+void print_receiver_report(const ThermalCase& c, const thermal::FilmBalance& b);
 
 }  // namespace centrec::cli

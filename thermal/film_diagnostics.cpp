@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "film_operator.hpp"
+#include "physical_constants.hpp"
 
 namespace centrec::thermal {
 
@@ -14,13 +15,14 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
   const long n = size();
   for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
   const Inputs in = inputs_at(t);
+  if (cavity_) update_cavity(y, in);
   FilmBalance b;
   for (int i = 0; i < nz; ++i) {
     const int top = i * nxi + nxi - 1, bottom = i * nxi;
     const SurfaceState st = surface(i, y[top], props_[top].kn, in);
     const double q = q_column_[i] * in.flux_factor;
     b.incident += q * g.dz;
-    b.absorbed += model_.material.alpha * q * g.dz;  // at the surface or in the top layers
+    b.absorbed += model_.material.alpha * solar_irradiation(i, in) * g.dz;  // at the surface or in the top layers
     b.emitted += st.emitted * g.dz;
     b.convected += st.convected * g.dz;
     b.wall += wall_loss(i, y[bottom], props_[bottom].kn) * g.dz;
@@ -45,7 +47,33 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
   b.mass_flow = m_out * g.perimeter;
   // A resting film has no outlet stream: report the inlet temperature.
   b.T_out = m_out > 0 ? model_.heat.temperature(H_out / m_out) : model_.T_in;
-  b.efficiency = b.incident > 0 ? b.carried / b.incident : 0.0;
+  b.aperture_power = b.incident;
+  if (cavity_) {
+    // Through the aperture: the solar band (linear in the flux factor) and the thermal band
+    // from the emissive powers the irradiation was computed from; the walls' losses at
+    // their temperatures. Independent of the film's cell residuals.
+    const Cavity& c = *cavity_;
+    const double U = model_.wall.adiabatic ? 0.0 : model_.wall.U_w;
+    b.reflected_loss = c.solar_out * in.flux_factor;
+    std::vector<double> emitted(c.n);
+    for (int k = 0; k < c.n; ++k) emitted[k] = c.eps[k] * c.E[k];
+    const BandSolution th = c.thermal->solve(emitted, std::vector<double>(c.n, 0.0),
+                                             kStefanBoltzmann * std::pow(model_.surface.T_env, 4));
+    b.emitted_loss = th.aperture_out - th.aperture_in;
+    for (int k = c.rings; k < c.n; ++k) {
+      const double Tw = c.T_wall[k - c.rings];
+      b.walls_convected += c.h * (Tw - model_.surface.T_air) * c.area[k];
+      b.walls_insulation += U * (Tw - model_.wall.T_amb) * c.area[k];
+    }
+    b.h_cavity = c.h;
+  } else {
+    b.reflected_loss = (1.0 - model_.material.alpha) * b.incident;
+    b.emitted_loss = b.emitted;
+    b.h_cavity = model_.surface.h_conv;
+  }
+  b.receiver_residual = b.aperture_power - b.reflected_loss - b.emitted_loss - b.convected - b.walls_convected - b.wall -
+                        b.walls_insulation - b.carried - b.inlet_conduction - b.storage;
+  b.efficiency = b.aperture_power > 0 ? b.carried / b.aperture_power : 0.0;
   return b;
 }
 
@@ -53,6 +81,8 @@ FilmFields FilmOperator::fields(double t, const double* y) {
   const FilmGrid& g = grid_;
   const long n = size();
   const Inputs in = inputs_at(t);
+  for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
+  if (cavity_) update_cavity(y, in);
   FilmFields f;
   f.T.assign(y, y + n);
   f.k_n.resize(n);
@@ -70,10 +100,25 @@ FilmFields FilmOperator::fields(double t, const double* y) {
     const int top = i * g.nxi + g.nxi - 1, bottom = i * g.nxi;
     const SurfaceState st = surface(i, y[top], f.k_n[top], in);
     f.T_surface.push_back(st.T_s);
-    f.q_absorbed.push_back(model_.material.alpha * q_column_[i] * in.flux_factor);
+    f.q_absorbed.push_back(model_.material.alpha * solar_irradiation(i, in));
     f.q_emitted.push_back(st.emitted);
     f.q_convected.push_back(st.convected);
     f.q_wall.push_back(wall_loss(i, y[bottom], f.k_n[bottom]));
+  }
+  if (cavity_) {
+    const Cavity& c = *cavity_;
+    for (int k = 0; k < c.n; ++k) {
+      double T = 0.0;
+      if (k < c.rings) {
+        const int b = c.ring_begin[k], e = c.ring_begin[k + 1];
+        for (int i = b; i < e; ++i) T += f.T_surface[i] / (e - b);
+      } else {
+        T = c.T_wall[k - c.rings];
+      }
+      f.cavity_T.push_back(T);
+      f.cavity_solar_irradiation.push_back((c.primary[k] + c.H_solar[k]) * in.flux_factor);
+      f.cavity_thermal_irradiation.push_back(c.H[k]);
+    }
   }
   return f;
 }

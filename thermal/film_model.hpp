@@ -13,14 +13,34 @@
 
 namespace centrec::thermal {
 
-// Surface eta = t, facing the cavity: absorbed alpha q, emitted eps sigma F (T^4 - T_env^4),
-// convected h (T - T_air).
+// Surface eta = t, facing the cavity. Open-surface model: absorbed alpha q, emitted
+// eps sigma F (T^4 - T_env^4), convected h (T - T_air). Cavity model (CavitySettings): the
+// solar and thermal irradiation come from the enclosure, the convection coefficient from
+// the cavity correlation (or h_conv), T_env is the surroundings seen through the aperture
+// and T_air the ambient air.
 struct SurfaceConditions {
-  double loss_factor = 1.0;        // F, 1 = open surface, < 1 = the cavity returns radiation
+  double loss_factor = 1.0;        // F (open surface only), 1 = open surface, < 1 = the cavity returns radiation
   double T_env = 300.0;            // radiative environment, K
   double h_conv = 0.0;             // W/(m2 K)
   double T_air = 300.0;            // K
-  double absorb_depth_layers = 0;  // 0: absorb at the surface; n > 0: uniformly over n particle diameters
+  double absorb_depth_layers = 0;  // > 0: solar absorbed uniformly over n particle diameters
+  // > 0: solar absorbed with exp(-depth / (n d)) below the surface (Beer-Lambert); < 0: n from
+  // the column's mean solid fraction, n = (1 - phi) / (1.5 phi) (the volume-scattering
+  // extinction coefficient of a bed of large opaque spheres, beta = 1.5 phi / ((1 - phi) d),
+  // Brewster 2004, J. Heat Transfer 126, 1048). 0 and absorb_depth_layers 0: at the surface.
+  double extinction_depth_d = 0;
+};
+
+// The drum interior as a diffuse grey enclosure (thermal/cavity_view_factors.hpp,
+// cavity_radiation.hpp): film rings, back plate, front annulus, aperture at z = L.
+struct CavitySettings {
+  bool enabled = false;              // false: the open-surface model with loss factor F
+  double aperture_diameter = 0.0;    // m; 0 = the drum diameter (open front end, no annulus)
+  int rings = 25;                    // axial film sections of the enclosure (columns grouped)
+  double wall_absorptance = 0.3;     // solar absorptance of the back plate and front annulus
+  double wall_emissivity = 0.8;      // their thermal emissivity
+  bool convection_correlation = true;  // Siebers & Kraabel / Stine & McDonald; false: surface.h_conv
+  double tilt_rad = 0.7853981633974483;  // cavity axis below the horizontal (aperture facing down)
 };
 
 // Wall eta = 0: loss through the insulation U_w (T_wall - T_amb), or adiabatic.
@@ -46,6 +66,7 @@ struct FilmModel {
   TimeFactor flux_time;       // q(z, t) = flux(z) * flux_time(t)
   TimeFactor flow_time;       // u(z, eta, t) = u(z, eta) * flow_time(t) (mass-flow change)
   SurfaceConditions surface;
+  CavitySettings cavity;
   WallConditions wall;
   double T_in = 300.0;        // inlet temperature, K
   // Optional volumetric heat source (W/m3) at (z, eta, t): manufactured-solution tests.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "cavity_convection.hpp"
 #include "physical_constants.hpp"
 
 namespace centrec::thermal {
@@ -13,6 +14,7 @@ namespace {
 // where smooth, zero at extrema, so the face value stays between its neighbours.
 double van_leer(double a, double b) { return a * b > 0.0 ? 2.0 * a * b / (a + b) : 0.0; }
 double harmonic(double a, double b) { return 2.0 * a * b / (a + b); }
+constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const FilmGridSpec& spec)
@@ -30,6 +32,145 @@ FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const 
   q_column_.resize(grid_.nz);
   for (int i = 0; i < grid_.nz; ++i) q_column_[i] = model_.flux.at(grid_.zc[i]);
   props_.resize(size());
+  const double ext = model_.surface.extinction_depth_d;
+  if (ext != 0.0) {
+    // Exponential solar absorption: depth n d per column (n from the column's mean phi if < 0).
+    for (int i = 0; i < grid_.nz; ++i) {
+      double n = ext;
+      if (n < 0) {
+        double phi = 0.0;
+        for (int j = 0; j < grid_.nxi; ++j) phi += grid_.phi[grid_.index(i, j)] / grid_.nxi;
+        n = (1.0 - phi) / (1.5 * phi);
+      }
+      extinction_depth_.push_back(n * m.d);
+    }
+  }
+  if (model_.cavity.enabled) setup_cavity();
+}
+
+void FilmOperator::setup_cavity() {
+  const CavitySettings& cs = model_.cavity;
+  const Material& mat = model_.material;
+  if (!(mat.alpha > 0.0)) throw std::invalid_argument("cavity model: the film's solar absorptance must be > 0");
+  if (!(cs.wall_absorptance > 0 && cs.wall_absorptance <= 1 && cs.wall_emissivity > 0 && cs.wall_emissivity <= 1))
+    throw std::invalid_argument("cavity model: wall absorptance and emissivity must be in (0, 1]");
+  auto c = std::make_unique<Cavity>();
+  const int nz = grid_.nz, nr = std::clamp(cs.rings, 1, nz);
+  c->rings = nr;
+  c->ring_begin.resize(nr + 1);
+  for (int k = 0; k <= nr; ++k) c->ring_begin[k] = static_cast<int>((static_cast<long>(k) * nz) / nr);
+  c->ring_of.resize(nz);
+  std::vector<double> z(nr + 1);
+  for (int k = 0; k < nr; ++k) {
+    z[k] = grid_.length * c->ring_begin[k] / nz;
+    for (int i = c->ring_begin[k]; i < c->ring_begin[k + 1]; ++i) c->ring_of[i] = k;
+  }
+  z[nr] = grid_.length;
+  const double R = grid_.perimeter / (2.0 * kPi);
+  const double ra = cs.aperture_diameter > 0 ? 0.5 * cs.aperture_diameter : R;
+  if (ra > R * (1 + 1e-9))
+    throw std::invalid_argument("cavity model: the aperture diameter exceeds the drum diameter");
+  const CavityViewFactors vf = cavity_view_factors(R, z, std::min(ra, R));
+  const int n = vf.size() - 1;
+  c->n = n;
+  c->area.assign(vf.area.begin(), vf.area.begin() + n);
+  std::vector<double> rho_solar(n), rho_thermal(n);
+  c->eps.resize(n);
+  for (int k = 0; k < n; ++k) {
+    const bool ring = k < nr;
+    rho_solar[k] = 1.0 - (ring ? mat.alpha : cs.wall_absorptance);
+    c->eps[k] = ring ? mat.epsilon : cs.wall_emissivity;
+    rho_thermal[k] = 1.0 - c->eps[k];
+  }
+  c->thermal = std::make_unique<CavityEnclosure>(vf, rho_thermal);
+  c->thermal->irradiation_map(c->eps, c->M, c->m);
+  c->solar = std::make_unique<CavityEnclosure>(vf, rho_solar);
+  c->primary.assign(n, 0.0);
+  for (int k = 0; k < nr; ++k) {
+    const int b = c->ring_begin[k], e = c->ring_begin[k + 1];
+    for (int i = b; i < e; ++i) c->primary[k] += q_column_[i] / (e - b);
+  }
+  const BandSolution sol = c->solar->solve(std::vector<double>(n, 0.0), c->primary, 0.0);
+  c->H_solar = sol.H;
+  c->solar_out = sol.aperture_out;
+  c->H.assign(n, 0.0);
+  c->E.assign(n, 0.0);
+  c->T_s.assign(nz, model_.T_in);
+  c->T_wall.assign(n - nr, model_.T_in);
+  cavity_ = std::move(c);
+}
+
+double FilmOperator::solar_irradiation(int i, const Inputs& in) const {
+  const double diffuse = cavity_ ? cavity_->H_solar[cavity_->ring_of[i]] : 0.0;
+  return (q_column_[i] + diffuse) * in.flux_factor;
+}
+
+void FilmOperator::update_cavity(const double* T, const Inputs& in) {
+  Cavity& c = *cavity_;
+  const int nz = grid_.nz, nxi = grid_.nxi, nr = c.rings, n = c.n;
+  const SurfaceConditions& s = model_.surface;
+  const WallConditions& w = model_.wall;
+  const CavitySettings& cs = model_.cavity;
+  const double sigma = kStefanBoltzmann, E_env = sigma * std::pow(s.T_env, 4);
+  const double D = grid_.perimeter / kPi, d_ap = cs.aperture_diameter > 0 ? cs.aperture_diameter : D;
+  const double U = w.adiabatic ? 0.0 : w.U_w;
+  for (int i = 0; i < nz; ++i) c.T_s[i] = T[i * nxi + nxi - 1];
+  // Fixed point: the film surface temperatures follow the irradiation through the stiff
+  // half-cell conduction (contraction ~ 4 eps sigma T^3 / (2 k / deta) << 1); the walls
+  // are in radiative equilibrium with the film.
+  for (int it = 0; it < 200; ++it) {
+    double area_T = 0.0, area = 0.0;
+    for (int k = 0; k < n; ++k) {
+      double E = 0.0, Tm = 0.0;
+      if (k < nr) {
+        const int b = c.ring_begin[k], e = c.ring_begin[k + 1];
+        for (int i = b; i < e; ++i) {
+          const double x = c.T_s[i];
+          E += sigma * x * x * x * x / (e - b);
+          Tm += x / (e - b);
+        }
+      } else {
+        const double x = c.T_wall[k - nr];
+        E = sigma * x * x * x * x;
+        Tm = x;
+      }
+      c.E[k] = E;
+      area_T += c.area[k] * Tm;
+      area += c.area[k];
+    }
+    c.h = cs.convection_correlation ? cavity_convection_coefficient(area_T / area, s.T_air, D, d_ap, cs.tilt_rad)
+                                    : s.h_conv;
+    for (int k = 0; k < n; ++k) {
+      double h = c.m[k] * E_env;
+      const double* Mk = &c.M[static_cast<std::size_t>(k) * n];
+      for (int j = 0; j < n; ++j) h += Mk[j] * c.E[j];
+      c.H[k] = h;
+    }
+    double change = 0.0;
+    for (int i = 0; i < nz; ++i) {
+      const int top = i * nxi + nxi - 1;
+      const double Ts = surface(i, T[top], props_[top].kn, in).T_s;
+      change = std::max(change, std::abs(Ts - c.T_s[i]) / Ts);
+      c.T_s[i] = Ts;
+    }
+    for (int k = nr; k < n; ++k) {
+      // a S + e H - e sigma x^4 - h (x - T_air) - U (x - T_amb) = 0: concave and decreasing in
+      // x, so Newton from above the root (where e sigma x^4 equals all gains) converges
+      // monotonically.
+      const double e = c.eps[k], S = cs.wall_absorptance * c.H_solar[k] * in.flux_factor;
+      const double gain = S + e * c.H[k] + c.h * s.T_air + U * w.T_amb;
+      double x = std::pow(gain / (e * sigma), 0.25);
+      for (int iter = 0; iter < 100; ++iter) {
+        const double g = gain - e * sigma * x * x * x * x - (c.h + U) * x;
+        const double dx = g / (4.0 * e * sigma * x * x * x + c.h + U);
+        x += dx;
+        if (std::abs(dx) <= 1e-15 * x) break;
+      }
+      change = std::max(change, std::abs(x - c.T_wall[k - nr]) / x);
+      c.T_wall[k - nr] = x;
+    }
+    if (change < 1e-13) break;
+  }
 }
 
 long FilmOperator::lower_bandwidth() const {
@@ -79,23 +220,28 @@ double FilmOperator::face_temperature(int f, int j, const double* T) const {
 
 FilmOperator::SurfaceState FilmOperator::surface(int i, double T_p, double kn, const Inputs& in) const {
   const auto& s = model_.surface;
-  const double eps_sigma_F = model_.material.epsilon * kStefanBoltzmann * s.loss_factor;
+  const Cavity* c = cavity_.get();
+  // Open surface: eps sigma F (T^4 - T_env^4). Cavity: eps (sigma T^4 - H) with H the
+  // thermal irradiation of the column's ring.
+  const double F = c ? 1.0 : s.loss_factor;
+  const double eps_sigma_F = model_.material.epsilon * kStefanBoltzmann * F;
+  const double E_in = c ? c->H[c->ring_of[i]] : kStefanBoltzmann * std::pow(s.T_env, 4);
+  const double absorbed_in = model_.material.epsilon * F * E_in;
+  const double h = c ? c->h : s.h_conv;
   SurfaceState st;
-  const double Aq = s.absorb_depth_layers > 0 ? 0.0 : model_.material.alpha * q_column_[i] * in.flux_factor;
+  const double Aq = volumetric() ? 0.0 : model_.material.alpha * solar_irradiation(i, in);
   st.absorbed = Aq;
   if (grid_.lumped) {
     st.T_s = T_p;
   } else {
-    // Local balance kk (T_s - T_p) = Aq - eps sigma F (T_s^4 - T_env^4) - h (T_s - T_air):
+    // Local balance kk (T_s - T_p) = Aq - eps sigma F T_s^4 + eps F E_in - h (T_s - T_air):
     // g(T_s) is increasing and convex, and g >= 0 at the start point, so Newton converges
     // monotonically from above.
     const double kk = 2.0 * kn / grid_.deta[i];
-    auto g = [&](double x) {
-      return kk * (x - T_p) + eps_sigma_F * (x * x * x * x - std::pow(s.T_env, 4)) + s.h_conv * (x - s.T_air) - Aq;
-    };
-    double x = std::max({T_p, s.T_env, s.T_air}) + Aq / (kk + s.h_conv);
+    auto g = [&](double x) { return kk * (x - T_p) + eps_sigma_F * x * x * x * x - absorbed_in + h * (x - s.T_air) - Aq; };
+    double x = std::max({T_p, std::pow(E_in / kStefanBoltzmann, 0.25), s.T_air}) + Aq / (kk + h);
     for (int it = 0; it < 100; ++it) {
-      const double dg = kk + 4.0 * eps_sigma_F * x * x * x + s.h_conv;
+      const double dg = kk + 4.0 * eps_sigma_F * x * x * x + h;
       const double dx = g(x) / dg;
       x -= dx;
       if (std::abs(dx) <= 1e-14 * x) break;
@@ -103,8 +249,8 @@ FilmOperator::SurfaceState FilmOperator::surface(int i, double T_p, double kn, c
     st.T_s = x;
   }
   const double Ts = st.T_s;
-  st.emitted = eps_sigma_F * (Ts * Ts * Ts * Ts - std::pow(s.T_env, 4));
-  st.convected = s.h_conv * (Ts - s.T_air);
+  st.emitted = eps_sigma_F * Ts * Ts * Ts * Ts - absorbed_in;
+  st.convected = h * (Ts - s.T_air);
   return st;
 }
 
@@ -116,6 +262,12 @@ double FilmOperator::wall_loss(int i, double T_p, double kn) const {
 }
 
 double FilmOperator::absorbed_share(int i, int j) const {
+  if (!extinction_depth_.empty()) {
+    // Beer-Lambert below the surface, normalised over the film depth.
+    const double t = grid_.tc[i], dl = extinction_depth_[i];
+    const double lo = j * grid_.deta[i], hi = (j + 1) * grid_.deta[i];
+    return std::exp(-(t - hi) / dl) * -std::expm1(-(hi - lo) / dl) / -std::expm1(-t / dl);
+  }
   const double layers = model_.surface.absorb_depth_layers;
   if (!(layers > 0)) return 0.0;
   const double t = grid_.tc[i];
@@ -168,7 +320,7 @@ double FilmOperator::cell_residual(int p, const double* T, const CellProps* pr, 
   }
   // Volumetric absorption over the first particle layers, and an optional source.
   const double share = absorbed_share(i, j);
-  if (share > 0) R += share * model_.material.alpha * q_column_[i] * in.flux_factor * g.dz;
+  if (share > 0) R += share * model_.material.alpha * solar_irradiation(i, in) * g.dz;
   if (model_.source) R += model_.source(g.zc[i], g.eta_center(i, j), in.t) * g.volume(i);
   return R;
 }
@@ -179,6 +331,7 @@ bool FilmOperator::rhs(double t, const double* y, double* ydot) {
     if (!(y[p] > 0.0) || !std::isfinite(y[p])) return false;
   for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
   const Inputs in = inputs_at(t);
+  if (cavity_) update_cavity(y, in);
   for (long p = 0; p < n; ++p) ydot[p] = cell_residual(static_cast<int>(p), y, props_.data(), in) / props_[p].capacity;
   return true;
 }
@@ -227,6 +380,7 @@ double FilmOperator::steady_residual(double t, const double* y) {
     if (!(y[p] > 0.0) || !std::isfinite(y[p])) return INFINITY;
   for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
   const Inputs in = inputs_at(t);
+  if (cavity_) update_cavity(y, in);
   double sum = 0.0;
   for (long p = 0; p < n; ++p) sum += std::abs(cell_residual(static_cast<int>(p), y, props_.data(), in));
   // Scale: the absorbed power, or if there is none the power of a 1 K rise of the flow.
@@ -241,6 +395,58 @@ double FilmOperator::steady_residual(double t, const double* y) {
     scale = capacity / time_scale();
   }
   return sum / scale;
+}
+
+int FilmOperator::low_rank_jacobian(double t, const double* y, std::vector<double>& U, std::vector<double>& V) {
+  if (!cavity_) return 0;
+  // Linearisation of the exchange: a top cell's surface temperature T_s moves its ring's
+  // emissive power E_k (V: dE_k / dT_top), the irradiation of every surface follows
+  // dH = G dE_rings with the walls in equilibrium (dE_w = b_w dH_w, so
+  // G = (I - M_w B_w)^-1 M_rings), and a top cell's residual moves with its ring's H (U).
+  const long n = size();
+  for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
+  const Inputs in = inputs_at(t);
+  update_cavity(y, in);
+  const Cavity& c = *cavity_;
+  const int nz = grid_.nz, nxi = grid_.nxi, nr = c.rings, ns = c.n;
+  const double eps = model_.material.epsilon, sg = kStefanBoltzmann;
+  const double U_w = model_.wall.adiabatic ? 0.0 : model_.wall.U_w;
+  // A = I - M_w B_w over all surfaces (only wall columns of M), then G = A^-1 M_rings.
+  std::vector<double> A(static_cast<std::size_t>(ns) * ns, 0.0);
+  for (int k = 0; k < ns; ++k) {
+    A[static_cast<std::size_t>(k) * ns + k] = 1.0;
+    for (int w = nr; w < ns; ++w) {
+      const double Tw = c.T_wall[w - nr], ew = c.eps[w];
+      const double b = 4 * sg * Tw * Tw * Tw * ew / (4 * ew * sg * Tw * Tw * Tw + c.h + U_w);
+      A[static_cast<std::size_t>(k) * ns + w] -= c.M[static_cast<std::size_t>(k) * ns + w] * b;
+    }
+  }
+  const std::vector<double> Ainv = dense_inverse(std::move(A), ns);
+  std::vector<double> G(static_cast<std::size_t>(ns) * nr, 0.0);  // row-major ns x nr
+  for (int k = 0; k < ns; ++k)
+    for (int l = 0; l < ns; ++l) {
+      const double a = Ainv[static_cast<std::size_t>(k) * ns + l];
+      if (a == 0.0) continue;
+      for (int j = 0; j < nr; ++j) G[static_cast<std::size_t>(k) * nr + j] += a * c.M[static_cast<std::size_t>(l) * ns + j];
+    }
+  U.assign(static_cast<std::size_t>(n) * nr, 0.0);
+  V.assign(static_cast<std::size_t>(n) * nr, 0.0);
+  for (int i = 0; i < nz; ++i) {
+    const int top = i * nxi + nxi - 1, k = c.ring_of[i];
+    const SurfaceState st = surface(i, y[top], props_[top].kn, in);
+    const double Ts = st.T_s, rad = 4 * eps * sg * Ts * Ts * Ts;
+    double dTs_dTp = 1.0, dflux_dH = eps;
+    if (!grid_.lumped) {
+      const double kk = 2.0 * props_[top].kn / grid_.deta[i], den = kk + rad + c.h;
+      dTs_dTp = kk / den;
+      dflux_dH = kk * eps / den;
+    }
+    const int members = c.ring_begin[k + 1] - c.ring_begin[k];
+    V[static_cast<std::size_t>(k) * n + top] = 4 * sg * Ts * Ts * Ts * dTs_dTp / members;
+    const double scale = dflux_dH * grid_.dz / props_[top].capacity;
+    for (int j = 0; j < nr; ++j) U[static_cast<std::size_t>(j) * n + top] = scale * G[static_cast<std::size_t>(k) * nr + j];
+  }
+  return nr;
 }
 
 double FilmOperator::time_scale() const {

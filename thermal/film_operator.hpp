@@ -15,8 +15,10 @@
 //                 conduction.
 // Every face flux is one function of its two sides, so the sum over cells telescopes to
 // the boundary powers and the steady energy balance closes to round-off.
+#include <memory>
 #include <vector>
 
+#include "cavity_radiation.hpp"
 #include "film_field.hpp"
 #include "film_grid.hpp"
 #include "film_model.hpp"
@@ -37,13 +39,26 @@ struct FilmBalance {
   double residual = 0.0;     // absorbed - emitted - convected - wall - carried - inlet_conduction - storage
   double T_out = 0.0;        // mixing-cup outlet temperature (weight rho_b u c_p), K
   double mass_flow = 0.0;    // kg/s
-  double efficiency = 0.0;   // carried / incident
+  double efficiency = 0.0;   // carried / aperture_power
+  // Receiver view (cavity model; the open-surface model fills the same fields with
+  // aperture_power = incident, reflected_loss = (1 - alpha) incident, emitted_loss = emitted).
+  double aperture_power = 0.0;    // concentrated sunlight entering through the aperture
+  double reflected_loss = 0.0;    // sunlight leaving through the aperture
+  double emitted_loss = 0.0;      // net thermal radiation leaving through the aperture
+  double walls_convected = 0.0;   // back plate and front annulus to the air
+  double walls_insulation = 0.0;  // back plate and front annulus through their insulation
+  double h_cavity = 0.0;          // convection coefficient used, W/(m2 K)
+  // aperture_power - reflected_loss - emitted_loss - convected - walls_convected - wall -
+  // walls_insulation - carried - inlet_conduction - storage
+  double receiver_residual = 0.0;
 };
 
 // Fields for output, per cell [nz * nxi] unless noted.
 struct FilmFields {
   std::vector<double> T, k_n, k_bed, k_rad, k_mix;
   std::vector<double> T_surface, q_absorbed, q_emitted, q_convected, q_wall;  // per column [nz], W/m2
+  // Cavity model: enclosure surfaces (rings, back plate, front annulus), per surface.
+  std::vector<double> cavity_T, cavity_solar_irradiation, cavity_thermal_irradiation;  // K, W/m2, W/m2
 };
 
 // Effective wall-normal conductivity of the moving film per axial section (DESIGN.md
@@ -65,6 +80,8 @@ class FilmOperator : public OdeSystem {
   bool jacobian(double t, const double* y, const double* fy, const BandEntrySink& sink) override;
   double steady_residual(double t, const double* y) override;
   double time_scale() const override;
+  // Cavity model: the radiation exchange between rings, U V^T with one column per ring.
+  int low_rank_jacobian(double t, const double* y, std::vector<double>& U, std::vector<double>& V) override;
 
   // When frozen, the flux and flow time factors are taken at t = 0 whatever t is given
   // (a steady state for the initial operating point).
@@ -75,6 +92,7 @@ class FilmOperator : public OdeSystem {
   std::vector<KeffSection> keff_sections(const double* y) const;
 
   const FilmGrid& grid() const { return grid_; }
+  bool cavity() const { return cavity_ != nullptr; }
   const FilmModel& model() const { return model_; }
   std::vector<double> uniform_state(double T) const { return std::vector<double>(size(), T); }
 
@@ -95,8 +113,18 @@ class FilmOperator : public OdeSystem {
   // Temperature advected through axial face f (0..nz) of stripe j.
   double face_temperature(int f, int j, const double* T) const;
   SurfaceState surface(int i, double T_p, double kn, const Inputs& in) const;
+  double solar_irradiation(int i, const Inputs& in) const;    // primary + diffuse sunlight on column i, W/m2
+  // Cavity model: brings the enclosure state (surface temperatures of the columns and
+  // walls, thermal irradiation, convection coefficient) to a fixed point for the film
+  // state T; props_ must hold the props of T. The band Jacobian sees the irradiation as
+  // given (the nonlocal coupling is left to the Newton iterations).
+  void update_cavity(const double* T, const Inputs& in);
+  void setup_cavity();
   double wall_loss(int i, double T_p, double kn) const;       // W/m2 out of the film
   double absorbed_share(int i, int j) const;                  // fraction of alpha q absorbed in cell
+  bool volumetric() const {
+    return model_.surface.absorb_depth_layers > 0 || model_.surface.extinction_depth_d != 0;
+  }
   double cell_residual(int p, const double* T, const CellProps* pr, const Inputs& in) const;
 
   FilmGrid grid_;
@@ -106,6 +134,25 @@ class FilmOperator : public OdeSystem {
   std::vector<double> q_column_;      // q(z_i), W/m2
   std::vector<CellProps> props_;      // scratch: props at the current state
   std::vector<double> jac_scratch_;
+  std::vector<double> extinction_depth_;  // per column, m (exponential solar absorption)
+
+  struct Cavity {
+    std::unique_ptr<CavityEnclosure> solar;  // reflectances 1 - alpha
+    std::unique_ptr<CavityEnclosure> thermal;  // reflectances 1 - eps
+    double solar_out = 0.0;                  // sunlight leaving through the aperture at flux factor 1, W
+    std::vector<double> eps;                 // thermal emissivity per surface
+    std::vector<double> M, m;                // thermal irradiation H = M E + m E_env
+    std::vector<double> H_solar;             // diffuse solar irradiation at flux factor 1, W/m2
+    std::vector<double> primary;             // primary solar per surface at flux factor 1, W/m2
+    std::vector<int> ring_of;                // ring of each column
+    std::vector<int> ring_begin;             // first column of each ring [rings + 1]
+    std::vector<double> area;                // per surface, m2
+    int rings = 0, n = 0;                    // rings, non-aperture surfaces
+    // State of the last update.
+    std::vector<double> H, T_s, T_wall, E;   // irradiation per surface, column T_s, wall T, emissive power
+    double h = 0.0;
+  };
+  std::unique_ptr<Cavity> cavity_;
 };
 
 }  // namespace centrec::thermal

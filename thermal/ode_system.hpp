@@ -3,6 +3,7 @@
 // integrator and the steady-state solver see (DESIGN.md section 11, MFEM's
 // TimeDependentOperator pattern). Integrators know nothing of films.
 #include <functional>
+#include <vector>
 
 namespace centrec::thermal {
 
@@ -27,6 +28,13 @@ class OdeSystem {
   virtual double steady_residual(double t, const double* y) = 0;
   // Time scale of the slowest transport (residence time or conduction time), s.
   virtual double time_scale() const = 0;
+  // Optional low-rank part of the Jacobian that the band cannot hold (e.g. radiation
+  // exchange between distant cells): J = J_band + U V^T with U, V column-major size() x r.
+  // Returns r (0: none). The steady Newton solves with it by the Woodbury identity.
+  virtual int low_rank_jacobian(double /*t*/, const double* /*y*/, std::vector<double>& /*U*/,
+                                std::vector<double>& /*V*/) {
+    return 0;
+  }
 };
 
 }  // namespace centrec::thermal

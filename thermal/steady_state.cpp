@@ -7,10 +7,64 @@
 
 #include <cmath>
 #include <cstdio>
+#include <exception>
+
+#include "cavity_radiation.hpp"
 
 namespace centrec::thermal {
 
 namespace {
+// With a low-rank Jacobian part J = J_band + U V^T: x = J_band^-1 b is turned into the
+// solution of J x = b by the Woodbury identity, x -= Z (I + V^T Z)^-1 V^T x, Z = J_band^-1 U.
+bool apply_low_rank(OdeSystem& sys, const std::vector<double>& y, SUNLinearSolver LS, SUNMatrix A, N_Vector x) {
+  std::vector<double> U, V;
+  const int r = sys.low_rank_jacobian(0.0, y.data(), U, V);
+  if (r == 0) return true;
+  const long n = sys.size();
+  N_Vector col = N_VClone(x), rhs = N_VClone(x);
+  std::vector<double> Z(static_cast<std::size_t>(n) * r);
+  bool ok = true;
+  for (int j = 0; j < r && ok; ++j) {
+    double* pr = N_VGetArrayPointer(rhs);
+    for (long k = 0; k < n; ++k) pr[k] = U[static_cast<std::size_t>(j) * n + k];
+    ok = SUNLinSolSolve(LS, A, col, rhs, 0.0) == 0;
+    const double* pc = N_VGetArrayPointer(col);
+    for (long k = 0; k < n; ++k) Z[static_cast<std::size_t>(j) * n + k] = pc[k];
+  }
+  N_VDestroy(col);
+  N_VDestroy(rhs);
+  if (!ok) return false;
+  std::vector<double> C(static_cast<std::size_t>(r) * r, 0.0), w(r, 0.0);
+  double* px = N_VGetArrayPointer(x);
+  std::vector<long> nz;  // V is sparse (one ring's top cells per column): loop over its nonzeros
+  for (int i = 0; i < r; ++i) {
+    const double* Vi = &V[static_cast<std::size_t>(i) * n];
+    nz.clear();
+    for (long k = 0; k < n; ++k)
+      if (Vi[k] != 0.0) nz.push_back(k);
+    for (long k : nz) w[i] += Vi[k] * px[k];
+    for (int j = 0; j < r; ++j) {
+      double s = i == j ? 1.0 : 0.0;
+      const double* Zj = &Z[static_cast<std::size_t>(j) * n];
+      for (long k : nz) s += Vi[k] * Zj[k];
+      C[static_cast<std::size_t>(i) * r + j] = s;
+    }
+  }
+  std::vector<double> Cinv;
+  try {
+    Cinv = dense_inverse(std::move(C), r);
+  } catch (const std::exception&) {
+    return false;
+  }
+  for (int j = 0; j < r; ++j) {
+    double cj = 0.0;
+    for (int i = 0; i < r; ++i) cj += Cinv[static_cast<std::size_t>(j) * r + i] * w[i];
+    const double* Zj = &Z[static_cast<std::size_t>(j) * n];
+    for (long k = 0; k < n; ++k) px[k] -= Zj[k] * cj;
+  }
+  return true;
+}
+
 // Damped Newton on f(y) = 0 with the system's band Jacobian. Returns the iterations used;
 // y and residual hold the best state found.
 int newton_polish(OdeSystem& sys, std::vector<double>& y, double& residual, const SteadySettings& s,
@@ -32,6 +86,7 @@ int newton_polish(OdeSystem& sys, std::vector<double>& y, double& residual, cons
     double* pb = N_VGetArrayPointer(b);
     for (long k = 0; k < n; ++k) pb[k] = -f[k];
     if (SUNLinSolSolve(LS, A, x, b, 0.0) != 0) break;
+    if (!apply_low_rank(sys, y, LS, A, x)) break;
     const double* dx = N_VGetArrayPointer(x);
     bool improved = false;
     for (double lambda = 1.0; lambda > 1e-3; lambda *= 0.5) {

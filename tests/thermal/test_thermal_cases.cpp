@@ -23,6 +23,7 @@ const Golden kGolden[] = {
     {"thermal_centrec_gaussian_1d.yaml", 1335.766125991923, 0.0},
     {"thermal_centrec_gaussian_2d.yaml", 1324.8022982645136, 0.0},
     {"thermal_cloud_transient.yaml", 1375.2321035387583, 1704.570324274259},
+    {"thermal_centrec_cavity.yaml", 1472.2646693236616, 0.0},  // the cavity model
 };
 }  // namespace
 
