@@ -92,13 +92,18 @@ std::string data_file(const dem::scene::CentrecScene& scene, const Box& box, Lig
   return d.str();
 }
 
-// The drum mesh: facet columns within 1 % of a diameter of the true cylinder, facets about
-// 10 times longer than wide, and the curvature that lets contact history cross from one
-// facet column to the next.
+// The drum mesh: facet columns within 0.1 % of a diameter of the true cylinder, facets
+// about 10 times longer than wide, and the curvature that lets contact history cross from
+// one facet column to the next. The deck's drum is a static mesh with a surface velocity,
+// so a particle held on the smooth wall travels over the polygon: its facets' sagitta is a
+// washboard of that height. The static Hertz overlap of a wall-layer particle under its
+// centrifugal load is about 1e-3 d, so facets within 1e-2 d shook the stuck layer loose
+// (smooth-wall lip 3 d drum: -10.3 % holdup and a wedge-shaped film against the native
+// engine, -1.8 % within 1e-3 d; tests/bench/results/engine_crosscheck.md).
 void plan_drum_mesh(const SceneConfig& c, double d, LiggghtsDeckPlan& plan) {
   const double R = 0.5 * c.drum.diameter;
   const double L = c.slice.enabled ? c.slice.length : c.drum.length;
-  plan.drum_facets_around = facets_around(R, 0.01 * d);
+  plan.drum_facets_around = facets_around(R, 1e-3 * d);
   plan.drum_facets_axial = facets_along(R, L, plan.drum_facets_around);
   plan.drum_curvature_deg = cylinder_curvature_deg(R, L, plan.drum_facets_around, plan.drum_facets_axial);
   plan.has_ends = !c.slice.enabled && (c.drum.back_plate || c.drum.lip_height > 0.0);
