@@ -1,5 +1,5 @@
 #pragma once
-// Natural-convection loss of an open cavity receiver (DESIGN.md section 9): the correlation
+// Natural-convection loss of an open cavity receiver (docs/cavity_model.md): the correlation
 // of Siebers & Kraabel (1984, "Estimating convective energy losses from solar central
 // receivers", Sandia SAND84-8717) with the inclination and aperture factor of Stine &
 // McDonald (1989, "Cavity receiver convective heat loss", Proc. ISES Solar World Congress),

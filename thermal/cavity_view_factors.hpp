@@ -1,5 +1,5 @@
 #pragma once
-// View factors of the receiver cavity (DESIGN.md section 9): a cylinder of radius R and
+// View factors of the receiver cavity (docs/cavity_model.md): a cylinder of radius R and
 // length L whose inner wall is cut into coaxial rings (the film's axial sections), closed
 // at z = 0 by the back plate (a disc of radius R) and at z = L by the front plane, which is
 // the aperture (a disc of radius r_a <= R) plus, if r_a < R, the front annulus r_a..R.
