@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "dem/neighbour_list.hpp"
@@ -217,4 +218,34 @@ TEST(EngineMechanics, NeighbourListReachSkipsPeriodicWrapEntries) {
   build_neighbour_list(list, grid, x, r, motion, 1.2, pz, NeighbourList{}, 1);
   ASSERT_EQ(list.nbr.size(), 20u);
   EXPECT_EQ(list.reach, 2);
+}
+
+// No particle or wall without a real material: ParticleInit and MaterialId have no default,
+// the engine starts with no material, and a pair of materials that would meet without an
+// interaction is refused (there is no default interaction).
+TEST(EngineMechanics, EveryParticleAndWallNamesAMaterialWithItsInteractions) {
+  static_assert(!std::is_default_constructible_v<ParticleInit>, "a particle must name its material");
+  static_assert(!std::is_default_constructible_v<MaterialId>, "no default material");
+  Simulation sim(quiet_config(1e-6));
+  EXPECT_THROW(sim.add_particle({MaterialId(0), kRadius, {0, 0, 0}}), std::invalid_argument);  // no material yet
+  const MaterialId grain = sim.add_material(paper_material());
+  EXPECT_THROW(sim.add_particle({grain, kRadius, {0, 0, 0}}), std::invalid_argument);  // grain-grain unset
+  sim.set_interaction(grain, grain, PairInteraction{0.5, 0.5, 0.1});
+  EXPECT_NO_THROW(sim.add_particle({grain, kRadius, {0, 0, 0}}));
+  const MaterialId steel = sim.add_material(Material{2e11, 0.3, 7800.0});
+  EXPECT_THROW(sim.add_wall(Wall::plane({0, 0, -1}, {0, 0, 1}, steel)), std::invalid_argument);  // grain-steel unset
+  Wall no_material;
+  no_material.axis = {0, 0, 1};
+  EXPECT_THROW(sim.add_wall(no_material), std::invalid_argument);
+  sim.set_interaction(grain, steel, PairInteraction{0.3, 10000.0, 0.2});
+  EXPECT_NO_THROW(sim.add_wall(Wall::plane({0, 0, -1}, {0, 0, 1}, steel)));
+  // A second particle material must have its interaction with the first and with the wall.
+  const MaterialId glass = sim.add_material(Material{6e10, 0.2, 2500.0});
+  sim.set_interaction(glass, glass, PairInteraction{0.9, 0.3, 0.0});
+  EXPECT_THROW(sim.add_particle({glass, kRadius, {0.01, 0, 0}}), std::invalid_argument);  // glass-grain unset
+  sim.set_interaction(glass, grain, PairInteraction{0.7, 0.4, 0.05});
+  EXPECT_THROW(sim.add_particle({glass, kRadius, {0.01, 0, 0}}), std::invalid_argument);  // glass-steel unset
+  sim.set_interaction(glass, steel, PairInteraction{0.7, 0.4, 0.05});
+  EXPECT_NO_THROW(sim.add_particle({glass, kRadius, {0.01, 0, 0}}));
+  EXPECT_EQ(sim.size(), 2u);
 }
