@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "liggghts_materials.hpp"
+#include "liggghts/liggghts_materials.hpp"
 
 namespace centrec::bench {
 namespace {
@@ -65,12 +65,12 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
   // delay 0 with the displacement check = rebuild exactly when needed.
   std::fprintf(f, "neighbor %.9g bin\nneigh_modify delay 0\n", k.skin);
   // Materials: type 1 particles, type 2 the wall (same E, nu); per-pair e, mu, mu_r.
-  cli::LiggghtsMaterials m;
+  liggghts::LiggghtsMaterials m;
   m.particle_youngs_modulus = m.wall_youngs_modulus = c.youngs_modulus;
   m.particle_poisson_ratio = m.wall_poisson_ratio = c.poisson_ratio;
   m.particle_particle = {c.restitution, c.friction, c.rolling_friction};
   m.particle_wall = {c.restitution, c.wall_friction, c.wall_rolling_friction};
-  std::fputs(cli::liggghts_material_commands(m).c_str(), f);
+  std::fputs(liggghts::liggghts_material_commands(m).c_str(), f);
   std::fprintf(f, "timestep %.9g\n", c.dt);
   // The wall: a still mesh whose surface moves as if rotating (no mesh motion, no
   // re-binning of triangles each step): LIGGGHTS' cheapest rotating cylinder; its
@@ -80,7 +80,7 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
                "fix wall all wall/gran %s mesh n_meshes 1 meshes cyl\n"
                "fix integ all nve/sphere\n"
                "fix grav all gravity %.17g vector 0 %.17g %.17g\n",
-               k.stl_file.c_str(), k.curvature_deg, W, cli::liggghts_wall_model(), c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
+               k.stl_file.c_str(), k.curvature_deg, W, liggghts::liggghts_wall_model(), c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
   // Cheap thermo during the timed runs (printed only at run start and end); lost atoms stop the run.
   std::fprintf(f,
                "thermo_style custom step atoms ke\n"

@@ -14,15 +14,17 @@
 #include <filesystem>
 #include <fstream>
 
-#include "case_file.hpp"
-#include "coupled_output.hpp"
-#include "coupled_run.hpp"
-#include "dem_cache.hpp"
-#include "film_field_h5.hpp"
-#include "h5_file.hpp"
+#include "config/case_file.hpp"
+#include "runs/coupled_output.hpp"
+#include "runs/coupled_run.hpp"
+#include "runs/dem_cache.hpp"
+#include "io/film_field_h5.hpp"
+#include "io/h5_file.hpp"
 
 using namespace centrec;
-using namespace centrec::cli;
+using namespace centrec::config;
+using namespace centrec::io;
+using namespace centrec::runs;
 namespace fs = std::filesystem;
 
 namespace {

@@ -8,15 +8,15 @@
 #include <string>
 #include <unistd.h>
 
-#include "commands.hpp"
+#include "cli/commands.hpp"
 #include "coupling/scaling_laws.hpp"
-#include "strict_yaml.hpp"
+#include "config/strict_yaml.hpp"
 
 using centrec::cli::Args;
 using centrec::cli::cmd_scale;
-using centrec::yaml::ConfigError;
-using centrec::yaml::MapReader;
-using centrec::yaml::Range;
+using centrec::config::ConfigError;
+using centrec::config::MapReader;
+using centrec::config::Range;
 
 namespace {
 struct Receiver {

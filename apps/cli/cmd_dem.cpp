@@ -1,0 +1,123 @@
+// `centrec dem CASE.yaml --out DIR`: a DEM-only run of the CentRec scene.
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <cstdio>
+#include <stdexcept>
+
+#include "io/atomic_write.hpp"
+#include "config/case_file.hpp"
+#include "io/checkpoint_h5.hpp"
+#include "io/code_version.hpp"
+#include "cli/commands.hpp"
+#include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/scene_sampler.hpp"
+#include "runs/dem_case_run.hpp"
+#include "cli/dem_engine_options.hpp"
+#include "liggghts/dem_liggghts_run.hpp"
+#include "runs/dem_run_report.hpp"
+#include "runs/progress_meter.hpp"
+
+namespace centrec::cli {
+
+namespace {
+
+struct DemOptions {
+  std::string case_path, out_dir = "out/dem", resume_dir;
+  int threads = -1;         // -1 = from the case
+  double duration = -1.0;   // -1 = from the case
+  DemEngineOptions engine;
+};
+
+void print_dem_help() {
+  std::printf(
+      "usage: centrec dem CASE.yaml [--out DIR] [--threads N] [--duration SECONDS]\n"
+      "                  [--engine centrec|liggghts] [--ranks N] [--mpirun CMD] [--liggghts EXE]\n"
+      "                  [--wall-rolling-model relative|liggghts]\n"
+      "       centrec dem --resume DIR [--threads N]\n\n"
+      "Runs the DEM of the CentRec drum (or periodic slice) described by the case's\n"
+      "`dem:` section and writes DIR/summary.json (headline figures and the resolved\n"
+      "configuration), DIR/dem.h5 (mass flows, averaged film fields, particle snapshots;\n"
+      "units as attributes), DIR/dem.xmf (open in ParaView) and DIR/mass_flow.csv.\n"
+      "--threads and --duration override run.threads and run.duration.\n"
+      "--engine liggghts runs the same case on LIGGGHTS 3.8 (`mpirun -np N liggghts`, N = --ranks;\n"
+      "--mpirun srun for a cluster launcher) in DIR/liggghts and reads its dumps into the same\n"
+      "samplers and outputs; settings LIGGGHTS cannot express are refused (see export-liggghts).\n"
+      "--wall-rolling-model overrides contacts.wall_rolling_model (liggghts: LIGGGHTS' form).\n\n"
+      "Every run.checkpoint_interval seconds of wall time (default 300; 0 = off) and at the\n"
+      "end the run writes DIR/checkpoint.h5 (atomically). --resume DIR continues a killed\n"
+      "run from it with the case stored there (a CASE.yaml given too must match it); the\n"
+      "result is bitwise the same as the uninterrupted run's. A killed sampling turn is\n"
+      "sampled again from its start.\n");
+}
+
+DemOptions parse(const Args& args) {
+  DemOptions o;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](const char* name) -> std::string {
+      if (i + 1 >= args.size()) throw std::invalid_argument(std::string(name) + " needs a value");
+      return args[++i];
+    };
+    if (parse_engine_option(args, i, o.engine)) continue;
+    if (a == "--out") o.out_dir = value("--out");
+    else if (a == "--resume") o.resume_dir = value("--resume");
+    else if (a == "--threads") o.threads = std::stoi(value("--threads"));
+    else if (a == "--duration") o.duration = std::stod(value("--duration"));
+    else if (!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
+    else if (o.case_path.empty()) o.case_path = a;
+    else throw std::invalid_argument("more than one case file given");
+  }
+  if (!o.resume_dir.empty()) {
+    if (o.engine.engine != "centrec") throw std::invalid_argument("--resume is for the native engine (centrec) only");
+    if (o.duration > 0.0) throw std::invalid_argument("--duration cannot change a resumed run (it is in the checkpoint's case)");
+    o.out_dir = o.resume_dir;
+  }
+  if (o.case_path.empty() && o.resume_dir.empty())
+    throw std::invalid_argument("no case file given (centrec dem --help)");
+  return o;
+}
+
+// The LIGGGHTS engine: same case, same samplers and outputs (dem_liggghts_run).
+int run_on_liggghts(const config::CaseFile& cf, const config::DemCase& dc, const DemOptions& opt) {
+  liggghts::LiggghtsLaunch launch;
+  launch.ranks = opt.engine.ranks;
+  launch.mpirun = opt.engine.mpirun;
+  launch.liggghts = opt.engine.liggghts;
+  const io::DemRunResult r = liggghts::run_dem_on_liggghts(cf, dc, opt.out_dir, launch);
+  runs::write_dem_run_report(opt.out_dir, cf, dc, r);
+  return 0;
+}
+
+}  // namespace
+
+int cmd_dem(const Args& args) {
+  if (wants_help(args)) {
+    print_dem_help();
+    return 0;
+  }
+  const DemOptions opt = parse(args);
+  // A resumed run takes its case from the checkpoint (a case file given too must match).
+  std::optional<io::RunCheckpoint> ck;
+  if (!opt.resume_dir.empty()) ck = io::read_checkpoint(opt.resume_dir);
+  const config::CaseFile cf = ck ? config::read_case_text(ck->resolved_yaml, ck->case_path) : config::read_case_file(opt.case_path);
+  if (ck && !opt.case_path.empty() && config::read_case_file(opt.case_path).resolved_yaml != ck->resolved_yaml)
+    throw std::invalid_argument(opt.case_path + " does not match the case stored in " + io::checkpoint_path(opt.resume_dir) +
+                                "; resume without the case file, or start a new run");
+  if (ck && ck->code_version != centrec::io::code_version())
+    std::fprintf(stderr, "centrec dem: warning: checkpoint written by %s, resuming with %s\n", ck->code_version.c_str(),
+                 centrec::io::code_version());
+  if (!cf.dem) throw std::invalid_argument(cf.path + " has no `dem:` section");
+  config::DemCase dc = *cf.dem;
+  if (opt.threads >= 0) dc.scene.threads = opt.threads;
+  if (opt.duration > 0.0) dc.run.duration = opt.duration;
+  if (!opt.engine.wall_rolling_model.empty()) apply_wall_rolling_model(dc, opt.engine.wall_rolling_model);
+  if (opt.engine.engine == "liggghts") {
+    io::ensure_directory(opt.out_dir);
+    return run_on_liggghts(cf, dc, opt);
+  }
+  runs::run_dem_case(cf, dc, opt.out_dir, ck);
+  return 0;
+}
+
+}  // namespace centrec::cli
