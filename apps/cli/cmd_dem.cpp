@@ -1,22 +1,18 @@
 // `centrec dem CASE.yaml --out DIR`: a DEM-only run of the CentRec scene.
-#include <chrono>
-#include <cmath>
-#include <optional>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "io/atomic_write.hpp"
 #include "config/case_file.hpp"
 #include "io/checkpoint_h5.hpp"
 #include "io/code_version.hpp"
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
-#include "dem/scene/centrec_scene.hpp"
-#include "dem/scene/scene_sampler.hpp"
 #include "runs/dem_case_run.hpp"
 #include "cli/dem_engine_options.hpp"
 #include "liggghts/dem_liggghts_run.hpp"
 #include "runs/dem_run_report.hpp"
-#include "runs/progress_meter.hpp"
 
 namespace centrec::cli {
 
@@ -53,21 +49,14 @@ void print_dem_help() {
 
 DemOptions parse(const Args& args) {
   DemOptions o;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](const char* name) -> std::string {
-      if (i + 1 >= args.size()) throw std::invalid_argument(std::string(name) + " needs a value");
-      return args[++i];
-    };
-    if (parse_engine_option(args, i, o.engine)) continue;
-    if (a == "--out") o.out_dir = value("--out");
-    else if (a == "--resume") o.resume_dir = value("--resume");
-    else if (a == "--threads") o.threads = std::stoi(value("--threads"));
-    else if (a == "--duration") o.duration = std::stod(value("--duration"));
-    else if (!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
-    else if (o.case_path.empty()) o.case_path = a;
-    else throw std::invalid_argument("more than one case file given");
-  }
+  CommandLine app("dem");
+  app.add_option("CASE", o.case_path);
+  app.add_option("--out", o.out_dir);
+  app.add_option("--resume", o.resume_dir);
+  app.add_option("--threads", o.threads);
+  app.add_option("--duration", o.duration);
+  add_engine_options(app, o.engine);
+  app.read(args);
   if (!o.resume_dir.empty()) {
     if (o.engine.engine != "centrec") throw std::invalid_argument("--resume is for the native engine (centrec) only");
     if (o.duration > 0.0) throw std::invalid_argument("--duration cannot change a resumed run (it is in the checkpoint's case)");

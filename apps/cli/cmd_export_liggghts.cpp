@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "config/case_file.hpp"
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/dem_engine_options.hpp"
 #include "liggghts/liggghts_export.hpp"
@@ -23,20 +24,11 @@ int cmd_export_liggghts(const Args& args) {
   }
   std::string case_path, out_dir;
   std::string rolling;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](const char* name) -> std::string {
-      if (i + 1 >= args.size()) throw std::invalid_argument(std::string(name) + " needs a value");
-      return args[++i];
-    };
-    if (a == "--out") out_dir = value("--out");
-    else if (a == "--wall-rolling-model") rolling = value("--wall-rolling-model");
-    else if (!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
-    else if (case_path.empty()) case_path = a;
-    else throw std::invalid_argument("more than one case file given");
-  }
-  if (case_path.empty()) throw std::invalid_argument("no case file given (centrec export-liggghts --help)");
-  if (out_dir.empty()) throw std::invalid_argument("--out DIR is required");
+  CommandLine app("export-liggghts");
+  app.add_option("CASE", case_path)->required();
+  app.add_option("--out", out_dir)->required();
+  app.add_option("--wall-rolling-model", rolling);
+  app.read(args);
   const config::CaseFile cf = config::read_case_file(case_path);
   if (!cf.dem) throw std::invalid_argument(case_path + " has no `dem:` section");
   config::DemCase dc = *cf.dem;

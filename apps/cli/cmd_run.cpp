@@ -5,6 +5,7 @@
 
 #include "io/atomic_write.hpp"
 #include "config/case_file.hpp"
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
@@ -57,18 +58,17 @@ int cmd_run(const Args& args) {
   }
   std::string case_path, out_dir;
   runs::RunOptions o;
-  bool plots = true;
-  parse_case_args(args, "centrec run --help", case_path, [&](const std::string& a, const auto& value) {
-    if (a == "--out") out_dir = value();
-    else if (a == "--cache") o.cache_dir = value();
-    else if (a == "--speed-rpm") o.speed_rpm = std::stod(value());
-    else if (a == "--mass-flow") o.mass_flow = std::stod(value());
-    else if (a == "--threads") o.threads = std::stoi(value());
-    else if (a == "--no-plots") plots = false;
-    else return false;
-    return true;
-  });
-  if (out_dir.empty()) throw std::invalid_argument("give --out DIR (centrec run --help)");
+  bool no_plots = false;
+  CommandLine app("run");
+  app.add_option("CASE", case_path)->required();
+  app.add_option("--out", out_dir)->required();
+  app.add_option("--cache", o.cache_dir);
+  app.add_option("--speed-rpm", o.speed_rpm);
+  app.add_option("--mass-flow", o.mass_flow);
+  app.add_option("--threads", o.threads);
+  app.add_flag("--no-plots", no_plots);
+  app.read(args);
+  const bool plots = !no_plots;
   if (o.cache_dir.empty()) o.cache_dir = parent_of(out_dir) + "/dem-cache";
   const config::CaseFile cf = config::read_case_file(case_path);
   io::ensure_directory(out_dir);

@@ -7,7 +7,9 @@
 #include <string>
 
 #include "io/atomic_write.hpp"
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "config/case_receiver.hpp"
 #include "coupling/scaling_laws.hpp"
 #include "config/strict_yaml.hpp"
 
@@ -62,19 +64,6 @@ const std::map<std::string, std::string> kReceiverKeys = {{"--diameter", "diamet
 const char* kOtherFlags[] = {"--target-diameter", "--target-d-over-d", "--holdup-particles", "--holdup-kg",
                              "--film-thickness-d", "--density", "--solid-fraction", "--gravity"};
 
-double positive_number(const std::string& flag, const std::string& text) {
-  std::size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(v) || !(v > 0.0))
-    throw config::ConfigError(flag + ": '" + text + "' is not a positive number");
-  return v;
-}
-
 struct Request {
   std::map<std::string, double> value;  // by flag name
   std::string input, yaml_out;
@@ -85,36 +74,37 @@ struct Request {
   bool has(const std::string& flag) const { return value.count(flag) != 0; }
 };
 
+// The receiver: section's value for a key (absent keys are empty).
+std::optional<double> section_value(const config::ReceiverSection& s, const std::string& key) {
+  if (key == "diameter") return s.diameter;
+  if (key == "length") return s.length;
+  if (key == "speed_rpm") return s.speed_rpm;
+  if (key == "mass_flow") return s.mass_flow;
+  if (key == "particle_diameter") return s.particle_diameter;
+  return std::nullopt;
+}
+
 Request parse(const Args& args) {
   Request r;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& flag = args[i];
-    if (i + 1 >= args.size()) throw config::ConfigError(flag + ": missing value (see centrec scale --help)");
-    const std::string& val = args[++i];
-    bool known = kReceiverKeys.count(flag) != 0;
-    for (const char* f : kOtherFlags) known = known || flag == f;
-    if (flag == "--input") {
-      r.input = val;
-    } else if (flag == "--yaml") {
-      r.yaml_out = val;
-    } else if (!known) {
-      throw config::ConfigError("unknown option '" + flag + "' (see centrec scale --help)");
-    } else if (r.has(flag)) {
-      throw config::ConfigError(flag + ": given twice");
-    } else {
-      r.value[flag] = positive_number(flag, val);
-    }
-  }
+  CommandLine app("scale");
+  for (const auto& [flag, key] : kReceiverKeys) app.add_option(flag, r.value[flag])->check(positive_number());
+  for (const char* flag : kOtherFlags) app.add_option(flag, r.value[flag])->check(positive_number());
+  app.add_option("--input", r.input);
+  app.add_option("--yaml", r.yaml_out);
+  app.read(args);
+  for (auto it = r.value.begin(); it != r.value.end();) it = app.count(it->first) ? std::next(it) : r.value.erase(it);
   if (!r.input.empty()) {
+    // The same reader as a case's receiver: (a case file works: its other sections are ignored).
     config::MapReader root = config::MapReader::from_file(r.input);
-    if (!root.has("receiver")) throw config::ConfigError(r.input + ": no receiver: section");
+    if (!root.has("receiver")) throw ConfigError(r.input + ": no receiver: section");
     config::MapReader rec = root.child("receiver");
+    const config::ReceiverSection section = config::read_receiver_section(rec, false);
     for (const auto& [flag, key] : kReceiverKeys) {
-      if (!rec.has(key)) continue;
+      const std::optional<double> v = section_value(section, key);
+      if (!v) continue;
       if (r.has(flag)) rec.fail(key, "also given as " + flag + "; give it once");
-      r.value[flag] = rec.required_number(key, config::Range::positive());
+      r.value[flag] = *v;
     }
-    rec.finish();
   }
   for (const auto& [flag, key] : kReceiverKeys)
     if (flag != "--particle-diameter" && !r.has(flag))

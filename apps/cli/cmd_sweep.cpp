@@ -16,6 +16,7 @@
 
 #include "io/atomic_write.hpp"
 #include "config/case_file.hpp"
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "runs/dem_flow_status.hpp"
 #include "io/summary_json.hpp"
@@ -78,14 +79,12 @@ int cmd_sweep(const Args& args) {
   }
   std::string case_path, out_dir, cache;
   int parallel = 0;
-  parse_case_args(args, "centrec sweep --help", case_path, [&](const std::string& a, const auto& value) {
-    if (a == "--out") out_dir = value();
-    else if (a == "--cache") cache = value();
-    else if (a == "--parallel") parallel = std::stoi(value());
-    else return false;
-    return true;
-  });
-  if (out_dir.empty()) throw std::invalid_argument("give --out DIR (centrec sweep --help)");
+  CommandLine app("sweep");
+  app.add_option("CASE", case_path)->required();
+  app.add_option("--out", out_dir)->required();
+  app.add_option("--cache", cache);
+  app.add_option("--parallel", parallel);
+  app.read(args);
   const config::CaseFile cf = config::read_case_file(case_path);
   if (!cf.sweep) throw std::invalid_argument(case_path + " has no `sweep:` section (speed_rpm, mass_flow lists)");
   if (parallel <= 0) parallel = cf.sweep->parallel;

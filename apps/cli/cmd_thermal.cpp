@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "config/case_thermal.hpp"
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "io/summary_json.hpp"
 #include "runs/thermal_case_run.hpp"
@@ -11,17 +12,7 @@
 namespace centrec::cli {
 
 int cmd_thermal(const Args& args) {
-  std::string case_path, out_dir;
-  bool bad = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--out" && i + 1 < args.size())
-      out_dir = args[++i];
-    else if (!args[i].empty() && args[i][0] != '-' && case_path.empty())
-      case_path = args[i];
-    else if (args[i] != "-h" && args[i] != "--help")
-      bad = true;
-  }
-  if (wants_help(args) || bad || case_path.empty() || out_dir.empty()) {
+  if (wants_help(args) || args.empty()) {
     std::printf(
         "usage: centrec thermal CASE.yaml --out DIR\n\n"
         "Solves the energy equation of the particle film under concentrated solar flux\n"
@@ -36,6 +27,11 @@ int cmd_thermal(const Args& args) {
         "Examples: cases/thermal_*.yaml.\n");
     return wants_help(args) ? 0 : 2;
   }
+  std::string case_path, out_dir;
+  CommandLine app("thermal");
+  app.add_option("CASE", case_path)->required();
+  app.add_option("--out", out_dir)->required();
+  app.read(args);
   const config::ThermalCase c = config::read_thermal_case(case_path);
   std::filesystem::create_directories(out_dir);
   const auto t0 = std::chrono::steady_clock::now();

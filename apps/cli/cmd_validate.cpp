@@ -1,12 +1,13 @@
 #include <cstdio>
 
 #include "config/case_file.hpp"
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 
 namespace centrec::cli {
 
 int cmd_validate(const Args& args) {
-  if (wants_help(args) || args.size() != 1) {
+  if (wants_help(args) || args.empty()) {
     std::printf(
         "usage: centrec validate CASE.yaml\n\n"
         "Reads CASE.yaml with the same strict rules as every run (unknown keys, wrong\n"
@@ -14,7 +15,11 @@ int cmd_validate(const Args& args) {
         "prints the fully resolved configuration, defaults included.\n");
     return wants_help(args) ? 0 : 2;
   }
-  const config::CaseFile c = config::read_case_file(args[0]);
+  std::string case_path;
+  CommandLine app("validate");
+  app.add_option("CASE", case_path)->required();
+  app.read(args);
+  const config::CaseFile c = config::read_case_file(case_path);
   std::printf("# %s: valid\n%s\n", c.path.c_str(), c.resolved_yaml.c_str());
   return 0;
 }

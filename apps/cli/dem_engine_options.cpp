@@ -4,29 +4,12 @@
 
 namespace centrec::cli {
 
-bool parse_engine_option(const Args& args, std::size_t& i, DemEngineOptions& o) {
-  const std::string& a = args[i];
-  auto value = [&]() -> std::string {
-    if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-    return args[++i];
-  };
-  if (a == "--engine") {
-    o.engine = value();
-    if (o.engine != "centrec" && o.engine != "liggghts")
-      throw std::invalid_argument("--engine must be centrec or liggghts, not " + o.engine);
-  } else if (a == "--ranks") {
-    o.ranks = std::stoi(value());
-    if (o.ranks < 1) throw std::invalid_argument("--ranks must be at least 1");
-  } else if (a == "--mpirun") {
-    o.mpirun = value();
-  } else if (a == "--liggghts") {
-    o.liggghts = value();
-  } else if (a == "--wall-rolling-model") {
-    o.wall_rolling_model = value();
-  } else {
-    return false;
-  }
-  return true;
+void add_engine_options(CLI::App& app, DemEngineOptions& o) {
+  app.add_option("--engine", o.engine)->check(CLI::IsMember({"centrec", "liggghts"}));
+  app.add_option("--ranks", o.ranks)->check(positive_number());
+  app.add_option("--mpirun", o.mpirun);
+  app.add_option("--liggghts", o.liggghts);
+  app.add_option("--wall-rolling-model", o.wall_rolling_model);
 }
 
 void apply_wall_rolling_model(config::DemCase& dc, const std::string& model) {

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "config/case_dem.hpp"
-#include "cli/commands.hpp"
+#include "cli/command_line.hpp"
 
 namespace centrec::cli {
 
@@ -16,8 +16,8 @@ struct DemEngineOptions {
   std::string wall_rolling_model;     // empty = from the case
 };
 
-// If args[i] is one of the options above, consumes it (and its value) and returns true.
-bool parse_engine_option(const Args& args, std::size_t& i, DemEngineOptions& o);
+// Declares the options above on a command's parser.
+void add_engine_options(CLI::App& app, DemEngineOptions& o);
 
 // Sets contacts.wall_rolling_model ("relative" or "liggghts") on the case.
 void apply_wall_rolling_model(config::DemCase& dc, const std::string& model);

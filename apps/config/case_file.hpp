@@ -23,7 +23,7 @@ struct CaseFile {
   std::string resolved_yaml;  // the fully resolved configuration, echoed into outputs
 };
 
-// Reads and checks every section; throws config::ConfigError on the first problem.
+// Reads and checks every section; throws ConfigError on the first problem.
 CaseFile read_case_file(const std::string& path);
 // The same from YAML text (a checkpoint's resolved configuration); `path` names the case
 // in messages and anchors its relative paths.

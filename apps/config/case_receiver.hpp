@@ -11,10 +11,26 @@
 
 namespace centrec::config {
 
+// The `receiver:` section's keys as written; every command that takes a receiver reads it
+// here. With `complete`, the operating point (diameter, length, speed_rpm, mass_flow) is
+// required; without it (`centrec scale`, whose flags may give them) a key may be absent.
+struct ReceiverSection {
+  std::optional<double> diameter, length;  // m
+  std::optional<double> speed_rpm;         // rev/min
+  std::optional<double> mass_flow;         // kg/s
+  double tilt = 0.0;                       // rad
+  double dem_diameter_d = 0.0;             // > 0: derive the DEM drum at D = this x d
+  std::optional<double> particle_diameter;  // m (absent: the DEM's particles)
+};
+
+// Reads every key of `receiver` and checks that no other is given.
+ReceiverSection read_receiver_section(MapReader receiver, bool complete);
+
 struct ReceiverCase {
   coupling::ReceiverOperatingPoint op;  // diameter, length, omega, mass_flow (SI)
   double tilt = 0.0;                    // rad
   double dem_diameter_d = 0.0;          // > 0: derive the DEM drum at D = this x d
+  double particle_diameter = 0.0;       // m; > 0: must be the DEM's particle diameter
 };
 
 // Reads `receiver` (a child of the case root) and, when it derives the DEM drum, checks

@@ -32,7 +32,7 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                            bool film_from_dem = false);
 // Folder of a case file, against which its relative file paths resolve ("" = cwd).
 std::string case_directory(const std::string& case_path);
-// Reads a whole thermal case file; throws config::ConfigError on the first problem.
+// Reads a whole thermal case file; throws ConfigError on the first problem.
 ThermalCase read_thermal_case(const std::string& path);
 
 }  // namespace centrec::config
