@@ -9,8 +9,10 @@
 #include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
 #include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/feeder.hpp"
 #include "dem/scene/size_distribution.hpp"
 #include "dem/sphere_mass.hpp"
+#include "liggghts/liggghts_data_file.hpp"
 #include "liggghts/liggghts_materials.hpp"
 #include "liggghts/liggghts_stl.hpp"
 
@@ -41,11 +43,7 @@ long prime_seed(long base) {
 }
 constexpr long kInsertSeed = 20000000, kDistributionSeed = 30000000, kTemplateSeed = 40000000;
 
-struct Box {
-  double lo[3], hi[3];
-};
-
-Box domain(const SceneConfig& c, double dmax) {
+LiggghtsBox domain(const SceneConfig& c, double dmax) {
   const double R = 0.5 * c.drum.diameter, h = 1.05 * R;
   if (c.slice.enabled) return {{-h, -h, 0.0}, {h, h, c.slice.length}};
   // Room for the back plate and the outlet face (mesh nodes must lie inside the box),
@@ -55,41 +53,28 @@ Box domain(const SceneConfig& c, double dmax) {
 
 // The data file: glued spheres first (ids 1..glued), then the starting film, both taken
 // from the native scene's set-up so the two engines start from the same state.
-std::string data_file(const dem::scene::CentrecScene& scene, const Box& box, LiggghtsDeckPlan& plan) {
+std::string data_file(const dem::scene::CentrecScene& scene, const LiggghtsBox& box, LiggghtsDeckPlan& plan) {
   const auto& sim = scene.simulation();
   const double rho = scene.config().particle.material.density;
-  std::vector<std::size_t> order;
-  for (int pass = 0; pass < 2; ++pass)
-    for (std::size_t i = 0; i < sim.size(); ++i)
-      if ((sim.motions()[i] == dem::Motion::free) == (pass == 1)) order.push_back(i);
-  std::ostringstream d;
-  d << "centrec starting state: " << scene.glued_particles() << " glued rough-wall spheres (ids 1.."
-    << scene.glued_particles() << "), then the starting film (atom_style granular)\n\n"
-    << order.size() << " atoms\n2 atom types\n\n";
-  d << fmt("%.17g %.17g xlo xhi\n%.17g %.17g ylo yhi\n%.17g %.17g zlo zhi\n\nAtoms\n\n", box.lo[0], box.hi[0],
-           box.lo[1], box.hi[1], box.lo[2], box.hi[2]);
-  // atom_style granular: id type diameter density x y z
+  std::vector<LiggghtsAtom> atoms;
   plan.glued = plan.initial_free = 0;
   plan.initial_holdup = 0.0;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const std::size_t i = order[k];
-    const dem::Vec3 x = sim.positions()[i];
-    d << fmt("%zu 1 %.17g %.17g %.17g %.17g %.17g\n", k + 1, 2.0 * sim.radii()[i], rho, x.x, x.y, x.z);
-    if (sim.motions()[i] == dem::Motion::free) {
-      ++plan.initial_free;
-      plan.initial_holdup += sim.masses()[i];
-    } else {
-      ++plan.glued;
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t i = 0; i < sim.size(); ++i) {
+      const bool free = sim.motions()[i] == dem::Motion::free;
+      if (free != (pass == 1)) continue;
+      atoms.push_back({2.0 * sim.radii()[i], rho, sim.positions()[i], sim.velocities()[i], sim.angular_velocities()[i]});
+      if (free) {
+        ++plan.initial_free;
+        plan.initial_holdup += sim.masses()[i];
+      } else {
+        ++plan.glued;
+      }
     }
-  }
-  // Velocities for atom_style granular: id vx vy vz wx wy wz
-  d << "\nVelocities\n\n";
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const std::size_t i = order[k];
-    const dem::Vec3 v = sim.velocities()[i], w = sim.angular_velocities()[i];
-    d << fmt("%zu %.17g %.17g %.17g %.17g %.17g %.17g\n", k + 1, v.x, v.y, v.z, w.x, w.y, w.z);
-  }
-  return d.str();
+  const std::string g = std::to_string(scene.glued_particles());
+  return liggghts_data_file("centrec starting state: " + g + " glued rough-wall spheres (ids 1.." + g +
+                                "), then the starting film",
+                            box, atoms);
 }
 
 // The drum mesh: facet columns within 1 % of a diameter of the true cylinder, facets about
@@ -173,18 +158,19 @@ std::string size_templates(const dem::scene::ParticleSpec& p) {
 // of the native feeder's per-particle tangent).
 int feeder_parts(double arc_angle) { return std::max(1, static_cast<int>(std::ceil(arc_angle / (20.0 * M_PI / 180.0)))); }
 
-// Where the feeder may put particle centres (the native feeder's rule): the sector shrunk
-// by the largest radius r in r, theta (by r / rc) and z, never below 2 % of d across.
+// Where the feeder may put the centres of its largest particles (the native feeder's range),
+// centred on the feeder's sector and never below 2 % of d across (a LIGGGHTS region needs room).
 struct FeederCentres {
   double r_in, r_out, z0, z1, a0, arc;
 };
 
 FeederCentres feeder_centres(const SceneConfig& c) {
   const auto& f = c.feeder;
-  const double R = 0.5 * c.drum.diameter, rc = R - f.radial_offset;
   const double r = 0.5 * dem::scene::SizeSampler(c.particle, 0).max_diameter(), m = 0.01 * c.particle.diameter;
-  const double hr = std::max(m, 0.5 * f.radial_height - r), hz = std::max(m, 0.5 * f.axial_length - r);
-  const double arc = std::min(2.0 * M_PI, std::max(m / rc, (f.arc_width - 2.0 * r) / rc));
+  const dem::scene::FeederCentreRange range = dem::scene::feeder_centre_range(c, r);
+  const double rc = range.rc;
+  const double hr = std::max(m, 0.5 * range.radial_width), hz = std::max(m, 0.5 * range.axial_width);
+  const double arc = std::min(2.0 * M_PI, std::max(m / rc, range.arc_length / rc));
   const double zc = f.axial_start + 0.5 * f.axial_length;
   return {rc - hr, rc + hr, zc - hz, zc + hz, f.angle - 0.5 * arc, arc};
 }
@@ -380,7 +366,7 @@ LiggghtsDeckPlan export_liggghts(const config::CaseFile& cf, const config::DemCa
   plan.spinup_steps = (spin + plan.dump_every - 1) / plan.dump_every * plan.dump_every;
   plan.sampling_steps = static_cast<std::int64_t>(plan.sampled_turns) * plan.snapshots_per_turn * plan.dump_every;
   const double dmax = dem::scene::SizeSampler(c.particle, 0).max_diameter();
-  const Box box = domain(c, dmax);
+  const LiggghtsBox box = domain(c, dmax);
   io::write_text_atomically(dir + "/" + plan.data, data_file(scene, box, plan));
   plan_drum_mesh(c, c.particle.diameter, plan);
   io::write_text_atomically(dir + "/" + plan.drum_stl, drum_stl(c, plan));

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "io/atomic_write.hpp"
+#include "liggghts/liggghts_data_file.hpp"
 #include "liggghts/liggghts_materials.hpp"
 
 namespace centrec::bench {
@@ -20,27 +22,13 @@ void close_or_throw(std::FILE* f, const std::string& path) {
 }  // namespace
 
 void write_liggghts_data(const std::string& path, const FilmCase& c, const FilmState& s) {
-  std::FILE* f = open_or_throw(path);
   // The box holds the mesh (fix mesh/surface refuses nodes outside it); x, y are fixed
   // boundaries (the wall keeps the particles in), z is periodic.
   const double h = 1.01 * c.drum_radius;
-  std::fprintf(f, "centrec benchmark film (atom_style granular)\n\n%zu atoms\n2 atom types\n\n",
-               s.particles.size());
-  std::fprintf(f, "%.17g %.17g xlo xhi\n%.17g %.17g ylo yhi\n0 %.17g zlo zhi\n\nAtoms\n\n", -h, h, -h, h,
-               s.length);
-  // atom_style granular: id type diameter density x y z
-  for (std::size_t i = 0; i < s.particles.size(); ++i) {
-    const auto& p = s.particles[i];
-    std::fprintf(f, "%zu 1 %.17g %.17g %.17g %.17g %.17g\n", i + 1, s.diameter, c.density, p.x[0], p.x[1], p.x[2]);
-  }
-  // Velocities for atom_style granular: id vx vy vz wx wy wz
-  std::fprintf(f, "\nVelocities\n\n");
-  for (std::size_t i = 0; i < s.particles.size(); ++i) {
-    const auto& p = s.particles[i];
-    std::fprintf(f, "%zu %.17g %.17g %.17g %.17g %.17g %.17g\n", i + 1, p.v[0], p.v[1], p.v[2], p.w[0], p.w[1],
-                 p.w[2]);
-  }
-  close_or_throw(f, path);
+  std::vector<liggghts::LiggghtsAtom> atoms;
+  for (const auto& p : s.particles)
+    atoms.push_back({s.diameter, c.density, {p.x[0], p.x[1], p.x[2]}, {p.v[0], p.v[1], p.v[2]}, {p.w[0], p.w[1], p.w[2]}});
+  io::write_text_atomically(path, liggghts::liggghts_data_file("centrec benchmark film", {{-h, -h, 0.0}, {h, h, s.length}}, atoms));
 }
 
 void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmState& s,
