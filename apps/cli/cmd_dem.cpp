@@ -3,15 +3,15 @@
 #include <optional>
 #include <stdexcept>
 
-#include "io/atomic_write.hpp"
-#include "config/case_file.hpp"
-#include "io/checkpoint_h5.hpp"
-#include "io/code_version.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
-#include "runs/dem_case_run.hpp"
 #include "cli/dem_engine_options.hpp"
+#include "config/case_file.hpp"
+#include "io/atomic_write.hpp"
+#include "io/checkpoint_h5.hpp"
+#include "io/code_version.hpp"
 #include "liggghts/dem_liggghts_run.hpp"
+#include "runs/dem_case_run.hpp"
 #include "runs/dem_run_report.hpp"
 
 namespace centrec::cli {
@@ -67,17 +67,6 @@ DemOptions parse(const Args& args) {
   return o;
 }
 
-// The LIGGGHTS engine: same case, same samplers and outputs (dem_liggghts_run).
-int run_on_liggghts(const config::CaseFile& cf, const config::DemCase& dc, const DemOptions& opt) {
-  liggghts::LiggghtsLaunch launch;
-  launch.ranks = opt.engine.ranks;
-  launch.mpirun = opt.engine.mpirun;
-  launch.liggghts = opt.engine.liggghts;
-  const io::DemRunResult r = liggghts::run_dem_on_liggghts(cf, dc, opt.out_dir, launch);
-  runs::write_dem_run_report(opt.out_dir, cf, dc, r);
-  return 0;
-}
-
 }  // namespace
 
 int cmd_dem(const Args& args) {
@@ -102,10 +91,14 @@ int cmd_dem(const Args& args) {
   if (opt.duration > 0.0) dc.run.duration = opt.duration;
   if (!opt.engine.wall_rolling_model.empty()) apply_wall_rolling_model(dc, opt.engine.wall_rolling_model);
   if (opt.engine.engine == "liggghts") {
-    io::ensure_directory(opt.out_dir);
-    return run_on_liggghts(cf, dc, opt);
+    liggghts::LiggghtsLaunch launch;
+    launch.ranks = opt.engine.ranks;
+    launch.mpirun = opt.engine.mpirun;
+    launch.liggghts = opt.engine.liggghts;
+    runs::run_dem_case(cf, dc, opt.out_dir, liggghts::liggghts_engine(launch));
+  } else {
+    runs::run_dem_case(cf, dc, opt.out_dir, runs::native_engine(ck));
   }
-  runs::run_dem_case(cf, dc, opt.out_dir, ck);
   return 0;
 }
 

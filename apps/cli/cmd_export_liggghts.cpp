@@ -2,10 +2,10 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "config/case_file.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/dem_engine_options.hpp"
+#include "config/case_file.hpp"
 #include "liggghts/liggghts_export.hpp"
 
 namespace centrec::cli {

@@ -3,13 +3,13 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "io/atomic_write.hpp"
-#include "config/case_file.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "config/case_file.hpp"
+#include "io/atomic_write.hpp"
+#include "io/summary_json.hpp"
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
-#include "io/summary_json.hpp"
 #include "runs/thermal_output.hpp"
 
 namespace centrec::cli {

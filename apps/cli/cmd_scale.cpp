@@ -6,12 +6,12 @@
 #include <optional>
 #include <string>
 
-#include "io/atomic_write.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "config/case_receiver.hpp"
-#include "coupling/scaling_laws.hpp"
 #include "config/strict_yaml.hpp"
+#include "coupling/scaling_laws.hpp"
+#include "io/atomic_write.hpp"
 
 namespace centrec::cli {
 

@@ -14,12 +14,12 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "io/atomic_write.hpp"
-#include "config/case_file.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
-#include "runs/dem_flow_status.hpp"
+#include "config/case_file.hpp"
+#include "io/atomic_write.hpp"
 #include "io/summary_json.hpp"
+#include "runs/dem_flow_status.hpp"
 
 namespace centrec::cli {
 

@@ -2,9 +2,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "config/case_thermal.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "config/case_thermal.hpp"
 #include "io/summary_json.hpp"
 #include "runs/thermal_case_run.hpp"
 #include "runs/thermal_output.hpp"

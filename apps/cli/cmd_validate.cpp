@@ -1,8 +1,8 @@
 #include <cstdio>
 
-#include "config/case_file.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "config/case_file.hpp"
 
 namespace centrec::cli {
 

@@ -3,8 +3,8 @@
 // --liggghts) and the --wall-rolling-model override shared with export-liggghts.
 #include <string>
 
-#include "config/case_dem.hpp"
 #include "cli/command_line.hpp"
+#include "config/case_dem.hpp"
 
 namespace centrec::cli {
 

@@ -2,9 +2,9 @@
 // The `dem:` section of a case file -> the CentRec scene config and the run settings.
 #include <string>
 
+#include "config/strict_yaml.hpp"
 #include "dem/scene/scene_config.hpp"
 #include "dem/scene/scene_sampler.hpp"
-#include "config/strict_yaml.hpp"
 
 namespace centrec::config {
 

@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "config/case_dem.hpp"
-#include "coupling/scaling_laws.hpp"
 #include "config/strict_yaml.hpp"
+#include "coupling/scaling_laws.hpp"
 
 namespace centrec::config {
 

@@ -5,8 +5,8 @@
 // measured from /mass_flow over the run's flow window (run.flow_window_turns).
 #include <string>
 
-#include "dem/scene/scene_config.hpp"
 #include "coupling/dem_film_averages.hpp"
+#include "dem/scene/scene_config.hpp"
 
 namespace centrec::io {
 

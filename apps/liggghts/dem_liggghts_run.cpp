@@ -161,4 +161,10 @@ io::DemRunResult run_dem_on_liggghts(const config::CaseFile& cf, const config::D
   return r;
 }
 
+runs::DemEngine liggghts_engine(const LiggghtsLaunch& launch) {
+  return [launch](const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir) {
+    return run_dem_on_liggghts(cf, dc, out_dir, launch);
+  };
+}
+
 }  // namespace centrec::liggghts

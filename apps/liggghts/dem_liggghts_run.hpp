@@ -10,6 +10,7 @@
 #include "config/case_file.hpp"
 #include "io/dem_run_result.hpp"
 #include "liggghts/liggghts_launch.hpp"
+#include "runs/dem_case_run.hpp"
 
 namespace centrec::liggghts {
 
@@ -23,5 +24,7 @@ std::vector<dem::scene::MassFlowSample> read_liggghts_mass_flow(const std::strin
 // `launch.ranks`, `launch.mpirun` and `launch.liggghts` are used; paths are filled in.
 io::DemRunResult run_dem_on_liggghts(const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir,
                                  LiggghtsLaunch launch);
+// The same as an engine of runs::run_dem_case.
+runs::DemEngine liggghts_engine(const LiggghtsLaunch& launch);
 
 }  // namespace centrec::liggghts

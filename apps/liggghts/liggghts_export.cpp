@@ -6,12 +6,12 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "io/atomic_write.hpp"
-#include "io/code_version.hpp"
 #include "dem/scene/centrec_scene.hpp"
 #include "dem/scene/feeder.hpp"
 #include "dem/scene/size_distribution.hpp"
 #include "dem/sphere_mass.hpp"
+#include "io/atomic_write.hpp"
+#include "io/code_version.hpp"
 #include "liggghts/liggghts_data_file.hpp"
 #include "liggghts/liggghts_materials.hpp"
 #include "liggghts/liggghts_stl.hpp"

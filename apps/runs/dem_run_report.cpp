@@ -5,10 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "io/atomic_write.hpp"
-#include "io/code_version.hpp"
 #include "dem/film/steady_state.hpp"
 #include "dem/scene/mass_flow_window.hpp"
+#include "io/atomic_write.hpp"
+#include "io/code_version.hpp"
 #include "io/dem_output_h5.hpp"
 #include "io/summary_json.hpp"
 

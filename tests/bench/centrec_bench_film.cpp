@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
+#include "liggghts/liggghts_stl.hpp"
 #include "tests/bench/bench_options.hpp"
 #include "tests/bench/bench_table.hpp"
 #include "tests/bench/centrec_run.hpp"
-#include "liggghts/liggghts_stl.hpp"
 #include "tests/bench/film_case.hpp"
 #include "tests/bench/film_initial_state.hpp"
 #include "tests/bench/liggghts_deck.hpp"

@@ -15,11 +15,11 @@
 #include <fstream>
 
 #include "config/case_file.hpp"
+#include "io/film_field_h5.hpp"
+#include "io/h5_file.hpp"
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
 #include "runs/dem_cache.hpp"
-#include "io/film_field_h5.hpp"
-#include "io/h5_file.hpp"
 
 using namespace centrec;
 using namespace centrec::config;

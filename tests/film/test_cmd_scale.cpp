@@ -9,8 +9,8 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
-#include "coupling/scaling_laws.hpp"
 #include "config/strict_yaml.hpp"
+#include "coupling/scaling_laws.hpp"
 
 using centrec::cli::Args;
 using centrec::cli::cmd_scale;

@@ -14,10 +14,10 @@
 #include <string>
 #include <thread>
 
-#include "io/checkpoint_h5.hpp"
 #include "cli/commands.hpp"
-#include "io/h5_file.hpp"
 #include "dem/scene/centrec_scene.hpp"
+#include "io/checkpoint_h5.hpp"
+#include "io/h5_file.hpp"
 #include "tests/scene/slice_case.hpp"
 #include "tests/test_case_dir.hpp"
 

@@ -17,9 +17,9 @@
 #include "io/code_version.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/h5_file.hpp"
+#include "runs/thermal_case_run.hpp"
 #include "tests/test_case_dir.hpp"
 #include "thermal/analytic_film.hpp"
-#include "runs/thermal_case_run.hpp"
 
 using namespace centrec;
 using namespace centrec::config;
