@@ -1,8 +1,8 @@
 #pragma once
-// Reads the averaged film fields of a DEM run (DIR/dem.h5 /film, written by
-// apps/io/dem_output_h5) into the coupling's plain DemFilmAverages. The drum's length, speed
-// and particle density come from the scene that made the file; the outlet mass flow is
-// measured from /mass_flow over the run's flow window (run.flow_window_turns).
+// Reads the averaged film of a DEM run back from DIR/dem.h5 (written by
+// apps/io/dem_output_h5): the film fields and the mass-flow record, turned into the
+// coupling's DemFilmAverages by the same coupling::dem_film_averages that a run just made
+// in memory uses, so a cached DEM gives the coupling the same numbers as a fresh one.
 #include <string>
 
 #include "coupling/dem_film_averages.hpp"

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
+#include "coupling/dem_film_from_run.hpp"
 #include "io/code_version.hpp"
 #include "io/dem_film_h5.hpp"
 #include "runs/dem_cache.hpp"
@@ -71,10 +73,12 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
     // 1. DEM, or its cached outputs.
     const auto t0 = std::chrono::steady_clock::now();
     r.cache_key = dem_cache_key(resolved_dem_section(cf), r.dem, centrec::io::code_version());
+    // A DEM run now hands its film over in memory; a cached one is read back from its dem.h5.
+    std::optional<io::DemRunResult> ran;
     const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key, [&](const std::string& dir, bool resume) {
       if (resume) std::fprintf(stderr, "centrec run: continuing the interrupted DEM run in %s\n", dir.c_str());
-      run_dem_case(cf, r.dem, dir,
-                   native_engine(resume ? std::optional<io::RunCheckpoint>(io::read_checkpoint(dir)) : std::nullopt));
+      ran = run_dem_case(cf, r.dem, dir,
+                         native_engine(resume ? std::optional<io::RunCheckpoint>(io::read_checkpoint(dir)) : std::nullopt));
     });
     r.dem_dir = cached.dir;
     r.dem_cached = cached.hit;
@@ -85,7 +89,8 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
     // 2. Mapping, scale-up, mass-flux conservation.
     const auto t1 = std::chrono::steady_clock::now();
     try {
-      r.averages = io::read_dem_film(r.dem_dir + "/dem.h5", r.dem.scene, r.dem.run.flow_window_turns);
+      r.averages = ran ? coupling::dem_film_averages(ran->fields, r.dem.scene, ran->mass_flow, r.dem.run.flow_window_turns)
+                       : io::read_dem_film(r.dem_dir + "/dem.h5", r.dem.scene, r.dem.run.flow_window_turns);
     } catch (const std::exception& e) {
       // The usual cause: no film formed (too slow a drum for this retention, too short a run).
       const auto op = config::dem_operating_point(r.dem);

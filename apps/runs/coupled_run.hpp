@@ -1,6 +1,7 @@
 #pragma once
 // The coupled run behind `centrec run` (issue 5 item 3, DESIGN.md section 1):
-// DEM of the scaled-down drum (or its cached outputs) -> dem.h5 film averages ->
+// DEM of the scaled-down drum -> its averaged film (coupling/dem_film_from_run, in memory;
+// read back from dem.h5 when the DEM comes from the cache) ->
 // tangentially averaged film field (coupling/film_mapping) -> scale-up to the receiver
 // (coupling/film_scale_up) -> mass-flux conservation (coupling/film_mass_flow) ->
 // thermal steady state (and transient). A case that gives `film: {file: ...}` skips the DEM.

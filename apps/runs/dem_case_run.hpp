@@ -24,9 +24,9 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
                                   const std::optional<io::RunCheckpoint>& ck = std::nullopt);
 DemEngine native_engine(const std::optional<io::RunCheckpoint>& ck = std::nullopt);
 
-// Runs `engine` and writes out_dir/{summary.json, dem.h5, dem.xmf, mass_flow.csv}
-// (apps/runs/dem_run_report).
-void run_dem_case(const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir,
+// Runs `engine`, writes out_dir/{summary.json, dem.h5, dem.xmf, mass_flow.csv}
+// (apps/runs/dem_run_report) and returns the result.
+io::DemRunResult run_dem_case(const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir,
                   const DemEngine& engine);
 
 }  // namespace centrec::runs
