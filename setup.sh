@@ -11,7 +11,7 @@ PACKAGES=(
   libeigen3-dev libsundials-dev libhdf5-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libomp-dev
   python3 python3-matplotlib python3-h5py python3-numpy python3-yaml
-  nlohmann-json3-dev
+  nlohmann-json3-dev libcli11-dev
   liggghts openmpi-bin
 )
 

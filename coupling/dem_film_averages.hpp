@@ -2,7 +2,8 @@
 // The DEM's averaged film fields as the coupling reads them (what `centrec dem` writes to
 // dem.h5 /film, DESIGN.md section 5), plus the DEM drum's operating point. Plain data, SI
 // units; wall distances of the profile bins in particle diameters d, as the samplers give
-// them. The HDF5 reader lives at the program's edge (apps/dem_film_h5).
+// them. Made from a DEM run by coupling/dem_film_from_run; a cached run's dem.h5 is read
+// back at the program's edge (apps/io/dem_film_h5).
 #include <vector>
 
 namespace centrec::coupling {

@@ -1,6 +1,6 @@
 #pragma once
 // The film accumulators' state as one flat array of doubles (checkpoints of a sampling
-// run, apps/checkpoint_h5): PackedState appends values, StateReader reads them back in
+// run, apps/io/checkpoint_h5): PackedState appends values, StateReader reads them back in
 // the same order and refuses a short or malformed array. Counts travel as doubles
 // (exact below 2^53).
 #include <cstddef>

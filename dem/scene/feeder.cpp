@@ -1,12 +1,25 @@
 #include "dem/scene/feeder.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include "dem/scene/rng_state.hpp"
 #include <vector>
+
+#include "dem/scene/rng_state.hpp"
 
 #include "dem/sphere_mass.hpp"
 
 namespace centrec::dem::scene {
+
+FeederCentreRange feeder_centre_range(const SceneConfig& config, double radius) {
+  const FeederSpec& f = config.feeder;
+  FeederCentreRange c;
+  c.rc = 0.5 * config.drum.diameter - f.radial_offset;
+  c.radial_width = f.radial_height - 2.0 * radius > 0 ? f.radial_height - 2.0 * radius : 0.0;
+  c.arc_length = f.arc_width - 2.0 * radius;
+  c.z0 = f.axial_start + radius;
+  c.axial_width = std::max(0.0, f.axial_length - 2.0 * radius);
+  return c;
+}
 
 Feeder::Feeder(const SceneConfig& config, MaterialId particle_material, std::uint64_t seed)
     : cfg_(config), material_(particle_material), sizes_(config.particle, seed), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {
@@ -64,10 +77,11 @@ double Feeder::feed(Simulation& sim, double elapsed) {
     const double m = sphere_mass(cfg_.particle.material.density, radius);
     if (backlog_ < m) break;
     bool placed = false;
+    const FeederCentreRange centres = feeder_centre_range(cfg_, radius);
     for (int a = 0; a < f.max_attempts && !placed; ++a) {
-      const double r = rc + (u01(rng_) - 0.5) * (f.radial_height - 2.0 * radius > 0 ? f.radial_height - 2.0 * radius : 0.0);
-      const double th = f.angle + (u01(rng_) - 0.5) * (f.arc_width - 2.0 * radius) / rc;
-      const double z = f.axial_start + radius + u01(rng_) * std::max(0.0, f.axial_length - 2.0 * radius);
+      const double r = rc + (u01(rng_) - 0.5) * centres.radial_width;
+      const double th = f.angle + (u01(rng_) - 0.5) * centres.arc_length / rc;
+      const double z = centres.z0 + u01(rng_) * centres.axial_width;
       const Vec3 p{r * std::cos(th), r * std::sin(th), z};
       bool free_spot = true;
       for (std::size_t k = 0; k < near.size() && free_spot; ++k) {

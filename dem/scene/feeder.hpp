@@ -27,6 +27,19 @@ struct FeederState {
   FeederStats stats;
 };
 
+// Where the feeder may put the centre of a particle of radius `radius`: its sector shrunk
+// by the radius on every side (along the arc at the sector's middle radius rc). The native
+// feeder draws centres uniformly in it; the LIGGGHTS deck's insertion regions are this range
+// for the largest particle.
+struct FeederCentreRange {
+  double rc = 0.0;            // m, middle radius of the sector
+  double radial_width = 0.0;  // m, centres within rc -+ radial_width / 2 (>= 0)
+  double arc_length = 0.0;    // m along rc, centres within angle -+ arc_length / (2 rc)
+  double z0 = 0.0;            // m, centres in [z0, z0 + axial_width]
+  double axial_width = 0.0;   // m (>= 0)
+};
+FeederCentreRange feeder_centre_range(const SceneConfig& config, double radius);
+
 class Feeder {
  public:
   // Fed particles are made of `particle_material` (the scene's material for the case's

@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
+#include "liggghts/liggghts_stl.hpp"
 #include "tests/bench/bench_options.hpp"
 #include "tests/bench/bench_table.hpp"
 #include "tests/bench/centrec_run.hpp"
-#include "liggghts_stl.hpp"
 #include "tests/bench/film_case.hpp"
 #include "tests/bench/film_initial_state.hpp"
 #include "tests/bench/liggghts_deck.hpp"
@@ -116,10 +116,10 @@ int main(int argc, char** argv) {
         // Facets about 10 times longer than wide: LIGGGHTS was as fast with these as with
         // full-length ones, and refuses triangles whose smallest angle is below its
         // curvature limit (about 0.26 deg). An even count puts a facet edge on the 2-rank split.
-        int axial = centrec::cli::facets_along(c.drum_radius, s.length, o.stl_facets);
+        int axial = centrec::liggghts::facets_along(c.drum_radius, s.length, o.stl_facets);
         axial += axial % 2;
-        const long tris = centrec::cli::write_cylinder_stl(lig.deck.stl_file, c.drum_radius, s.length, o.stl_facets, axial);
-        lig.deck.curvature_deg = centrec::cli::cylinder_curvature_deg(c.drum_radius, s.length, o.stl_facets, axial);
+        const long tris = centrec::liggghts::write_cylinder_stl(lig.deck.stl_file, c.drum_radius, s.length, o.stl_facets, axial);
+        lig.deck.curvature_deg = centrec::liggghts::cylinder_curvature_deg(c.drum_radius, s.length, o.stl_facets, axial);
         std::printf("  LIGGGHTS mesh: %ld triangles (%d around x %d along z), curvature %.3g deg\n", tris, o.stl_facets,
                     axial, lig.deck.curvature_deg);
       }

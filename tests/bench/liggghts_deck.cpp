@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "liggghts_materials.hpp"
+#include "io/atomic_write.hpp"
+#include "liggghts/liggghts_data_file.hpp"
+#include "liggghts/liggghts_materials.hpp"
 
 namespace centrec::bench {
 namespace {
@@ -20,27 +22,13 @@ void close_or_throw(std::FILE* f, const std::string& path) {
 }  // namespace
 
 void write_liggghts_data(const std::string& path, const FilmCase& c, const FilmState& s) {
-  std::FILE* f = open_or_throw(path);
   // The box holds the mesh (fix mesh/surface refuses nodes outside it); x, y are fixed
   // boundaries (the wall keeps the particles in), z is periodic.
   const double h = 1.01 * c.drum_radius;
-  std::fprintf(f, "centrec benchmark film (atom_style granular)\n\n%zu atoms\n2 atom types\n\n",
-               s.particles.size());
-  std::fprintf(f, "%.17g %.17g xlo xhi\n%.17g %.17g ylo yhi\n0 %.17g zlo zhi\n\nAtoms\n\n", -h, h, -h, h,
-               s.length);
-  // atom_style granular: id type diameter density x y z
-  for (std::size_t i = 0; i < s.particles.size(); ++i) {
-    const auto& p = s.particles[i];
-    std::fprintf(f, "%zu 1 %.17g %.17g %.17g %.17g %.17g\n", i + 1, s.diameter, c.density, p.x[0], p.x[1], p.x[2]);
-  }
-  // Velocities for atom_style granular: id vx vy vz wx wy wz
-  std::fprintf(f, "\nVelocities\n\n");
-  for (std::size_t i = 0; i < s.particles.size(); ++i) {
-    const auto& p = s.particles[i];
-    std::fprintf(f, "%zu %.17g %.17g %.17g %.17g %.17g %.17g\n", i + 1, p.v[0], p.v[1], p.v[2], p.w[0], p.w[1],
-                 p.w[2]);
-  }
-  close_or_throw(f, path);
+  std::vector<liggghts::LiggghtsAtom> atoms;
+  for (const auto& p : s.particles)
+    atoms.push_back({s.diameter, c.density, {p.x[0], p.x[1], p.x[2]}, {p.v[0], p.v[1], p.v[2]}, {p.w[0], p.w[1], p.w[2]}});
+  io::write_text_atomically(path, liggghts::liggghts_data_file("centrec benchmark film", {{-h, -h, 0.0}, {h, h, s.length}}, atoms));
 }
 
 void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmState& s,
@@ -65,12 +53,12 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
   // delay 0 with the displacement check = rebuild exactly when needed.
   std::fprintf(f, "neighbor %.9g bin\nneigh_modify delay 0\n", k.skin);
   // Materials: type 1 particles, type 2 the wall (same E, nu); per-pair e, mu, mu_r.
-  cli::LiggghtsMaterials m;
+  liggghts::LiggghtsMaterials m;
   m.particle_youngs_modulus = m.wall_youngs_modulus = c.youngs_modulus;
   m.particle_poisson_ratio = m.wall_poisson_ratio = c.poisson_ratio;
   m.particle_particle = {c.restitution, c.friction, c.rolling_friction};
   m.particle_wall = {c.restitution, c.wall_friction, c.wall_rolling_friction};
-  std::fputs(cli::liggghts_material_commands(m).c_str(), f);
+  std::fputs(liggghts::liggghts_material_commands(m).c_str(), f);
   std::fprintf(f, "timestep %.9g\n", c.dt);
   // The wall: a still mesh whose surface moves as if rotating (no mesh motion, no
   // re-binning of triangles each step): LIGGGHTS' cheapest rotating cylinder; its
@@ -80,7 +68,7 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
                "fix wall all wall/gran %s mesh n_meshes 1 meshes cyl\n"
                "fix integ all nve/sphere\n"
                "fix grav all gravity %.17g vector 0 %.17g %.17g\n",
-               k.stl_file.c_str(), k.curvature_deg, W, cli::liggghts_wall_model(), c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
+               k.stl_file.c_str(), k.curvature_deg, W, liggghts::liggghts_wall_model(), c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
   // Cheap thermo during the timed runs (printed only at run start and end); lost atoms stop the run.
   std::fprintf(f,
                "thermo_style custom step atoms ke\n"

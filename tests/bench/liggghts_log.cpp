@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "liggghts_log_reader.hpp"
+#include "liggghts/liggghts_log_reader.hpp"
 
 namespace centrec::bench {
 namespace {
@@ -56,8 +56,8 @@ LiggghtsLog parse_liggghts_log(const std::string& path) {
         log.memory_mbytes_per_rank = std::max(log.memory_mbytes_per_rank, std::stod(line.substr(28)));
     } else if (starts_with(line, "Loop time of ")) {
       if (starts_with(phase, "timed")) {
-        cli::LiggghtsLoopTime t;
-        if (!cli::parse_loop_time(line, t)) throw std::runtime_error("cannot parse LIGGGHTS line: " + line);
+        liggghts::LiggghtsLoopTime t;
+        if (!liggghts::parse_loop_time(line, t)) throw std::runtime_error("cannot parse LIGGGHTS line: " + line);
         log.timed_loop_seconds.push_back(t.seconds);
         log.timed_loop_steps.push_back(t.steps);
         log.atoms_in_loop = t.atoms;

@@ -1,11 +1,11 @@
 #include "tests/bench/liggghts_run.hpp"
 
-#include "liggghts_launch.hpp"
+#include "liggghts/liggghts_launch.hpp"
 #include "tests/bench/liggghts_log.hpp"
 
 namespace centrec::bench {
 
-bool liggghts_available(const LiggghtsRunSettings& r) { return cli::liggghts_available(r.mpirun, r.liggghts); }
+bool liggghts_available(const LiggghtsRunSettings& r) { return liggghts::liggghts_available(r.mpirun, r.liggghts); }
 
 EngineResult run_liggghts(const FilmCase& c, const FilmState& s, const LiggghtsRunSettings& r) {
   EngineResult res;
@@ -16,7 +16,7 @@ EngineResult run_liggghts(const FilmCase& c, const FilmState& s, const LiggghtsR
   const std::string deck = r.work_dir + "/in.film_R" + std::to_string(r.deck.ranks);
   const std::string log = r.work_dir + "/log.film_R" + std::to_string(r.deck.ranks);
   write_liggghts_deck(deck, c, s, r.deck);
-  cli::LiggghtsLaunch launch;
+  liggghts::LiggghtsLaunch launch;
   launch.mpirun = r.mpirun;
   launch.liggghts = r.liggghts;
   launch.ranks = r.deck.ranks;
@@ -24,8 +24,8 @@ EngineResult run_liggghts(const FilmCase& c, const FilmState& s, const LiggghtsR
   launch.deck = deck;
   launch.log = log;
   launch.screen = r.work_dir + "/screen.film_R" + std::to_string(r.deck.ranks);
-  const std::string cmd = cli::liggghts_command(launch);
-  const int rc = cli::run_shell(cmd);
+  const std::string cmd = liggghts::liggghts_command(launch);
+  const int rc = liggghts::run_shell(cmd);
   LiggghtsLog parsed;
   try {
     parsed = parse_liggghts_log(log);

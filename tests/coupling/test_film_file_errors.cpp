@@ -8,10 +8,10 @@
 #include <fstream>
 #include <string>
 
-#include "case_thermal.hpp"
+#include "config/case_thermal.hpp"
 #include "coupling/film_mapping.hpp"
-#include "film_field_h5.hpp"
-#include "h5_file.hpp"
+#include "io/film_field_h5.hpp"
+#include "io/h5_file.hpp"
 #include "synthetic_dem_film.hpp"
 
 using namespace centrec;
@@ -40,7 +40,7 @@ std::string case_error(const std::string& dir, const std::string& film_path) {
   const std::string yaml = dir + "/case.yaml";
   std::ofstream(yaml) << "film: {file: " << film_path << "}\nthermal: {grid: {nz: 10, nxi: 4}}\n";
   try {
-    cli::read_thermal_case(yaml);
+    config::read_thermal_case(yaml);
   } catch (const std::exception& e) {
     return e.what();
   }

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "dem_flow_status.hpp"
+#include "runs/dem_flow_status.hpp"
 
 namespace fs = std::filesystem;
 
@@ -57,9 +57,9 @@ TEST(SweepCli, TwoPointsInParallelGiveATable) {
 
 // The band that makes a sweep point an operating point: outlet within 1.25x of the feed.
 TEST(SweepCli, DemFlowStatusBand) {
-  EXPECT_EQ(centrec::cli::dem_flow_status(0.79, 1.0), "filling");
-  EXPECT_EQ(centrec::cli::dem_flow_status(0.80, 1.0), "ok");
-  EXPECT_EQ(centrec::cli::dem_flow_status(1.187, 1.0), "ok");  // 55.45 rpm / 0.2 kg/s of the receiver_1m sweep
-  EXPECT_EQ(centrec::cli::dem_flow_status(1.25, 1.0), "ok");
-  EXPECT_EQ(centrec::cli::dem_flow_status(1.26, 1.0), "draining");
+  EXPECT_EQ(centrec::runs::dem_flow_status(0.79, 1.0), "filling");
+  EXPECT_EQ(centrec::runs::dem_flow_status(0.80, 1.0), "ok");
+  EXPECT_EQ(centrec::runs::dem_flow_status(1.187, 1.0), "ok");  // 55.45 rpm / 0.2 kg/s of the receiver_1m sweep
+  EXPECT_EQ(centrec::runs::dem_flow_status(1.25, 1.0), "ok");
+  EXPECT_EQ(centrec::runs::dem_flow_status(1.26, 1.0), "draining");
 }

@@ -8,15 +8,15 @@
 #include <string>
 #include <unistd.h>
 
-#include "commands.hpp"
+#include "cli/commands.hpp"
+#include "config/strict_yaml.hpp"
 #include "coupling/scaling_laws.hpp"
-#include "strict_yaml.hpp"
 
 using centrec::cli::Args;
 using centrec::cli::cmd_scale;
-using centrec::yaml::ConfigError;
-using centrec::yaml::MapReader;
-using centrec::yaml::Range;
+using centrec::config::ConfigError;
+using centrec::config::MapReader;
+using centrec::config::Range;
 
 namespace {
 struct Receiver {
@@ -96,6 +96,29 @@ TEST(ScaleCommand, ScalingTwiceEqualsScalingOnce) {
   EXPECT_NEAR(t.mdot / o.mdot, 1.0, 1e-10);
   EXPECT_NEAR(o.D, 33 * 1.2e-3, 1e-15);
   for (const auto& f : {via, twice, once}) std::filesystem::remove(f);
+}
+
+// A case file's receiver: section (with the keys only a coupled run uses: tilt_deg,
+// dem_diameter_d) is read by the same reader as the coupled run's.
+TEST(ScaleCommand, TakesTheReceiverOfACaseFile) {
+  const struct {
+    const char* file;
+    double D, L, rpm, mdot;
+  } cases[] = {{"quickstart.yaml", 0.12, 0.171, 160.08, 0.0357}, {"receiver_1m.yaml", 1.0, 1.425, 55.454, 0.2975}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.file);
+    const std::string out = temp_path("from_case.yaml");
+    ASSERT_EQ(cmd_scale({"--input", std::string(CENTREC_SOURCE_DIR) + "/cases/" + c.file, "--target-d-over-d", "25",
+                         "--yaml", out}),
+              0);
+    const Receiver r = read_receiver(out);
+    const double D = 25 * 1.2e-3, k = D / c.D;
+    EXPECT_NEAR(r.D, D, 1e-12);
+    EXPECT_NEAR(r.L, c.L * k, 1e-12);                // eq 3: L / R kept
+    EXPECT_NEAR(r.rpm, c.rpm / std::sqrt(k), 1e-9);  // eq 1: omega^2 R kept
+    EXPECT_NEAR(r.mdot, c.mdot * k, 1e-12);          // eq 2: mdot / R kept
+    std::filesystem::remove(out);
+  }
 }
 
 TEST(ScaleCommand, ClearErrors) {

@@ -10,12 +10,14 @@
 #include <cmath>
 #include <filesystem>
 
-#include "case_file.hpp"
-#include "dem_liggghts_run.hpp"
-#include "liggghts_dump.hpp"
-#include "liggghts_log_reader.hpp"
+#include "config/case_file.hpp"
+#include "liggghts/dem_liggghts_run.hpp"
+#include "liggghts/liggghts_dump.hpp"
+#include "liggghts/liggghts_log_reader.hpp"
 
-using namespace centrec::cli;
+using namespace centrec::config;
+using namespace centrec::io;
+using namespace centrec::liggghts;
 namespace fs = std::filesystem;
 
 TEST(LiggghtsEndToEnd, ImportedHoldupEqualsTheLogsAtomCount) {

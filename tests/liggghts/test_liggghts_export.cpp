@@ -9,11 +9,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "case_file.hpp"
-#include "liggghts_export.hpp"
-#include "liggghts_stl.hpp"
+#include "config/case_file.hpp"
+#include "liggghts/liggghts_export.hpp"
+#include "liggghts/liggghts_stl.hpp"
 
-using namespace centrec::cli;
+using namespace centrec::config;
+using namespace centrec::liggghts;
 namespace fs = std::filesystem;
 
 namespace {

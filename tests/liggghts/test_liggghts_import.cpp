@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "dem_liggghts_run.hpp"
-#include "liggghts_dump.hpp"
+#include "liggghts/dem_liggghts_run.hpp"
+#include "liggghts/liggghts_dump.hpp"
 
-using namespace centrec::cli;
+using namespace centrec::liggghts;
 namespace fs = std::filesystem;
 
 namespace {

@@ -14,15 +14,16 @@
 #include <string>
 #include <thread>
 
-#include "checkpoint_h5.hpp"
-#include "commands.hpp"
-#include "h5_file.hpp"
+#include "cli/commands.hpp"
 #include "dem/scene/centrec_scene.hpp"
+#include "io/checkpoint_h5.hpp"
+#include "io/h5_file.hpp"
 #include "tests/scene/slice_case.hpp"
 #include "tests/test_case_dir.hpp"
 
 using namespace centrec;
 using namespace centrec::cli;
+using namespace centrec::io;
 using centrec::testing::temp_dir;
 using centrec::testing::write_case;
 

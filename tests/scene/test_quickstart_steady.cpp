@@ -4,14 +4,14 @@
 
 #include <cmath>
 
-#include "case_file.hpp"
+#include "config/case_file.hpp"
 #include "dem/film/steady_state.hpp"
 #include "dem/scene/centrec_scene.hpp"
 
 using namespace centrec;
 
 TEST(QuickstartSteadyState, OutletMassFlowConvergesToInlet) {
-  const cli::CaseFile cf = cli::read_case_file(std::string(CENTREC_SOURCE_DIR) + "/cases/quickstart.yaml");
+  const config::CaseFile cf = config::read_case_file(std::string(CENTREC_SOURCE_DIR) + "/cases/quickstart.yaml");
   ASSERT_TRUE(cf.dem.has_value());
   dem::scene::CentrecScene scene(cf.dem->scene);
   const double duration = cf.dem->run.duration + 3.0 * scene.turn_period();

@@ -7,10 +7,11 @@
 #include <cstdio>
 #include <string>
 
-#include "case_thermal.hpp"
-#include "thermal_case_run.hpp"
+#include "config/case_thermal.hpp"
+#include "runs/thermal_case_run.hpp"
 
-using namespace centrec::cli;
+using namespace centrec::config;
+using namespace centrec::runs;
 
 namespace {
 struct Golden {

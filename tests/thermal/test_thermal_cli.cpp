@@ -13,16 +13,18 @@
 #include <fstream>
 #include <string>
 
-#include "case_thermal.hpp"
-#include "code_version.hpp"
-#include "film_field_h5.hpp"
-#include "h5_file.hpp"
+#include "config/case_thermal.hpp"
+#include "io/code_version.hpp"
+#include "io/film_field_h5.hpp"
+#include "io/h5_file.hpp"
+#include "runs/thermal_case_run.hpp"
 #include "tests/test_case_dir.hpp"
 #include "thermal/analytic_film.hpp"
-#include "thermal_case_run.hpp"
 
 using namespace centrec;
-using namespace centrec::cli;
+using namespace centrec::config;
+using namespace centrec::io;
+using namespace centrec::runs;
 using centrec::testing::temp_dir;
 using centrec::testing::write_case;
 
@@ -39,7 +41,7 @@ thermal:
 std::string config_error(const std::string& dir, const std::string& text) {
   try {
     read_thermal_case(write_case(dir, text));
-  } catch (const yaml::ConfigError& e) {
+  } catch (const config::ConfigError& e) {
     return e.what();
   }
   return "(no error)";
@@ -104,7 +106,7 @@ TEST(ThermalCli, CommandWritesH5AndSummary) {
   EXPECT_EQ(dims[1], 12u);
   EXPECT_EQ(f.string_attribute("/steady/T", "units"), "K");
   EXPECT_EQ(f.string_attribute("/steady/keff/k_eff", "units"), "W/(m K)");
-  EXPECT_EQ(f.string_attribute("/", "centrec_version"), centrec::code_version());
+  EXPECT_EQ(f.string_attribute("/", "centrec_version"), centrec::io::code_version());
   EXPECT_NE(f.string_attribute("/", "config").find("T_in: 873.15"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir + "/out/thermal.h5.tmp"));
   std::ifstream js(dir + "/out/summary.json");

@@ -4,11 +4,11 @@
 
 #include <functional>
 
-#include "strict_yaml.hpp"
+#include "config/strict_yaml.hpp"
 
-using centrec::yaml::ConfigError;
-using centrec::yaml::MapReader;
-using centrec::yaml::Range;
+using centrec::config::ConfigError;
+using centrec::config::MapReader;
+using centrec::config::Range;
 
 namespace {
 std::string error_of(const std::function<void()>& f) {

@@ -1,0 +1,65 @@
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/command_line.hpp"
+#include "cli/commands.hpp"
+#include "config/case_thermal.hpp"
+#include "io/summary_json.hpp"
+#include "runs/thermal_case_run.hpp"
+#include "runs/thermal_output.hpp"
+
+namespace centrec::cli {
+
+int cmd_thermal(const Args& args) {
+  if (wants_help(args) || args.empty()) {
+    std::printf(
+        "usage: centrec thermal CASE.yaml --out DIR\n\n"
+        "Solves the energy equation of the particle film under concentrated solar flux\n"
+        "(DESIGN.md section 9): the steady state of the operating point (2D on z x xi = eta/t,\n"
+        "or the 1D depth-lumped model), then the transient if the case has `thermal.transient`\n"
+        "(flux step, cloud passage, mass-flow change). The film comes from `film.analytic` or\n"
+        "from a film-field HDF5 file `film.file` (group /film, DESIGN.md section 10).\n\n"
+        "Writes DIR/thermal.h5 (T, k fields, local fluxes, k_eff per section, transient\n"
+        "series; units as attributes; the resolved configuration and the code version as root\n"
+        "attributes) and DIR/summary.json (outlet mixing-cup temperature, efficiency, powers,\n"
+        "energy-balance residual, k_eff, solver statistics). Plot: apps/plot_thermal.py DIR.\n"
+        "Examples: cases/thermal_*.yaml.\n");
+    return wants_help(args) ? 0 : 2;
+  }
+  std::string case_path, out_dir;
+  CommandLine app("thermal");
+  app.add_option("CASE", case_path)->required();
+  app.add_option("--out", out_dir)->required();
+  app.read(args);
+  const config::ThermalCase c = config::read_thermal_case(case_path);
+  std::filesystem::create_directories(out_dir);
+  const auto t0 = std::chrono::steady_clock::now();
+  const runs::ThermalRun r = runs::run_thermal_case(c);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  runs::write_thermal_h5(out_dir + "/thermal.h5", c, r);
+  nlohmann::json summary = runs::thermal_summary(c, r);
+  summary["wall_time_s"] = seconds;
+  io::write_json_file(out_dir + "/summary.json", summary);
+  const auto& b = r.balance;
+  std::printf("centrec thermal %s: %s %dx%d, T_in %.2f K -> T_out %.2f K (%.2f C), efficiency %.4f, mdot %.4g kg/s\n",
+              c.path.c_str(), c.grid.lumped ? "1D" : "2D", r.op->grid().nz, r.op->grid().nxi, c.model.T_in, b.T_out,
+              b.T_out - 273.15, b.efficiency, b.mass_flow);
+  std::printf("  powers (W): incident %.6g, absorbed %.6g, emitted %.6g, convected %.6g, wall %.6g, carried %.6g; "
+              "balance residual %.2e of absorbed\n",
+              b.incident, b.absorbed, b.emitted, b.convected, b.wall, b.carried,
+              b.absorbed > 0 ? b.residual / b.absorbed : 0.0);
+  runs::print_receiver_report(c, b);
+  std::printf("  k_eff film mean %.4g W/(m K); steady solve %.3f s (%d Newton, %ld BDF steps)%s; total %.3f s\n",
+              summary["k_eff"]["film_mean"]["k_eff"].get<double>(), r.steady_seconds, r.steady.newton_iterations,
+              r.steady.stats.steps, r.has_transient ? ", transient run" : "", seconds);
+  if (r.has_transient)
+    std::printf("  transient to %.4g s: T_out %.2f -> %.2f K (min %.2f, max %.2f), %ld steps, %.3f s\n",
+                summary["transient"]["t_end_s"].get<double>(), summary["transient"]["T_out_start_K"].get<double>(),
+                summary["transient"]["T_out_end_K"].get<double>(), summary["transient"]["T_out_min_K"].get<double>(),
+                summary["transient"]["T_out_max_K"].get<double>(), r.transient.stats.steps, r.transient_seconds);
+  std::printf("  wrote %s/thermal.h5 and %s/summary.json\n", out_dir.c_str(), out_dir.c_str());
+  return 0;
+}
+
+}  // namespace centrec::cli

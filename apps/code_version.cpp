@@ -1,9 +1,0 @@
-#include "code_version.hpp"
-
-#include "centrec_version.hpp"  // generated at build time (cmake/write_version.cmake)
-
-namespace centrec {
-
-const char* code_version() { return CENTREC_VERSION_STRING; }
-
-}  // namespace centrec

@@ -1,0 +1,33 @@
+#pragma once
+// The `dem:` section of a case file -> the CentRec scene config and the run settings.
+#include <string>
+
+#include "config/strict_yaml.hpp"
+#include "dem/scene/scene_config.hpp"
+#include "dem/scene/scene_sampler.hpp"
+
+namespace centrec::config {
+
+struct DemRunSpec {
+  double duration = 1.0;          // s of simulated time before sampling starts
+  double progress_interval = 0.0; // s of wall time between progress lines (0 = auto)
+  double flow_window_turns = 5.0; // turns over which inlet/outlet mass flows are averaged
+  double steady_tolerance = 0.05; // steady: |outlet - inlet| <= this x inlet over the window
+  double checkpoint_interval = 300.0;  // s of wall time between DIR/checkpoint.h5 writes (0 = off)
+};
+
+struct DemSamplingSpec {
+  double turns = 0.0;  // drum turns sampled after run.duration (0 = no film fields)
+  dem::scene::SamplingSpec sampler;
+};
+
+struct DemCase {
+  dem::scene::SceneConfig scene;
+  DemRunSpec run;
+  DemSamplingSpec sampling;
+};
+
+// Reads `dem` (a child mapping of the case root); strict: unknown keys are errors.
+DemCase read_dem_case(MapReader dem);
+
+}  // namespace centrec::config

@@ -1,0 +1,32 @@
+#pragma once
+// A YAML case file read into the typed configs of each library.
+// Each top-level section has one reader (apps/case_<section>.cpp); a section
+// that is absent is simply not configured, an unknown top-level key is an error.
+#include <optional>
+#include <string>
+
+#include "config/case_dem.hpp"
+#include "config/case_receiver.hpp"
+#include "config/case_sweep.hpp"
+#include "config/case_thermal.hpp"
+#include "config/strict_yaml.hpp"
+
+namespace centrec::config {
+
+struct CaseFile {
+  std::string path;
+  std::string title;
+  std::optional<DemCase> dem;            // as given, before any receiver derivation
+  std::optional<ReceiverCase> receiver;  // the actual receiver of a coupled run (needs `dem`)
+  std::optional<ThermalCase> thermal;  // `film` + `thermal` sections (film from the DEM if absent)
+  std::optional<SweepSpec> sweep;        // the operating window of `centrec sweep`
+  std::string resolved_yaml;  // the fully resolved configuration, echoed into outputs
+};
+
+// Reads and checks every section; throws ConfigError on the first problem.
+CaseFile read_case_file(const std::string& path);
+// The same from YAML text (a checkpoint's resolved configuration); `path` names the case
+// in messages and anchors its relative paths.
+CaseFile read_case_text(const std::string& text, const std::string& path);
+
+}  // namespace centrec::config

@@ -1,0 +1,242 @@
+#include "config/case_thermal.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "io/film_field_h5.hpp"
+#include "io/flux_table_csv.hpp"
+#include "thermal/analytic_film.hpp"
+
+namespace centrec::config {
+
+namespace th = centrec::thermal;
+
+namespace {
+std::string resolve_path(const std::string& case_dir, const std::string& p) {
+  if (p.empty() || p[0] == '/' || case_dir.empty()) return p;
+  return case_dir + "/" + p;
+}
+
+const Range kTemperature = Range::closed(1.0, 5000.0);  // K
+
+th::Material read_material(MapReader r) {
+  th::Material m;
+  m.rho_s = r.number("rho_s", m.rho_s, Range::positive(), "kg/m3");
+  m.k_s = r.number("k_s", m.k_s, Range::positive(), "W/(m K)");
+  m.alpha = r.number("alpha", m.alpha, Range::closed(0.0, 1.0));
+  m.epsilon = r.number("epsilon", m.epsilon, Range::open_closed(0.0, 1.0));
+  m.d = r.number("d", m.d, Range::open_closed(0.0, 0.05), "m");
+  r.finish();
+  return m;
+}
+
+void read_film(MapReader r, const std::string& case_dir, double particle_d, ThermalCase& c) {
+  const bool analytic = r.has("analytic"), file = r.has("file");
+  if (analytic == file) r.fail(analytic ? "file" : "analytic", "give exactly one of film.analytic or film.file");
+  if (analytic) {
+    MapReader a = r.child("analytic");
+    th::AnalyticFilm af;
+    af.d = particle_d;
+    af.thickness = a.number("thickness", af.thickness, Range::open_closed(0.0, 0.5), "m");
+    if (!(af.thickness > af.d))
+      a.fail("thickness", "must exceed one particle diameter (got " + std::to_string(af.thickness) +
+                              " m, thermal.material.d = " + std::to_string(af.d) +
+                              " m): the resting layer is one diameter thick");
+    af.u_surface = a.number("u_surface", af.u_surface, Range::open_closed(0.0, 100.0), "m/s");
+    af.phi = a.number("phi", af.phi, Range::closed(0.05, 0.74));
+    af.D_uniform = a.number("D_uniform", af.D_uniform, Range::closed(0.0, 1.0), "m2/s");
+    af.D_shear_coeff = a.number("D_shear_coeff", af.D_shear_coeff, Range::closed(0.0, 10.0));
+    af.drum_diameter = a.number("drum_diameter", af.drum_diameter, Range::open_closed(0.0, 100.0), "m");
+    af.length = a.number("length", af.length, Range::open_closed(0.0, 100.0), "m");
+    a.finish();
+    c.film = th::analytic_film(af);
+    c.film_source = "analytic";
+  } else {
+    const std::string path = resolve_path(case_dir, r.string("file", ""));
+    const std::string group = r.string("group", "/film");
+    try {
+      c.film = io::read_film_field(io::H5File::open_read(path), group);
+    } catch (const std::exception& e) {
+      r.fail("file", e.what());
+    }
+    if (!(c.film.length > 0.0) || !(c.film.drum_diameter > 0.0))
+      r.fail("file", path + ": the film field needs positive 'length' and 'drum_diameter' attributes");
+    if (c.film.particle_diameter > 0.0 && std::abs(c.film.particle_diameter / particle_d - 1.0) > 1e-6)
+      r.fail("file", path + ": the film field is for particles of d = " + std::to_string(c.film.particle_diameter) +
+                         " m but thermal.material.d = " + std::to_string(particle_d) + " m (mismatched film file)");
+    c.film_source = path;
+  }
+  r.finish();
+}
+
+th::TimeFactor read_time_factor(MapReader r) {
+  th::TimeFactor f;
+  const std::string kind = r.choice("kind", "constant", {"constant", "step", "pulse"});
+  f.kind = kind == "step" ? th::TimeFactor::Kind::step
+           : kind == "pulse" ? th::TimeFactor::Kind::pulse
+                             : th::TimeFactor::Kind::constant;
+  if (f.kind != th::TimeFactor::Kind::constant) {
+    f.level = r.number("level", 1.0, Range::closed(0.0, 100.0));
+    f.t_start = r.number("t_start", 0.0, Range::non_negative(), "s");
+    f.ramp = r.number("ramp", 0.0, Range::non_negative(), "s");
+  }
+  if (f.kind == th::TimeFactor::Kind::pulse) {
+    f.t_end = r.number("t_end", f.t_start + f.ramp, Range::non_negative(), "s");
+    if (f.t_end < f.t_start + f.ramp) r.fail("t_end", "must be >= t_start + ramp (the dip must finish its first edge)");
+  }
+  r.finish();
+  return f;
+}
+
+void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
+  const std::string profile = r.choice("profile", "uniform", {"uniform", "gaussian", "table"});
+  th::FluxProfile& f = m.flux;
+  if (profile == "uniform") {
+    f.kind = th::FluxProfile::Kind::uniform;
+    f.q = r.number("q", f.q, Range::closed(0.0, 2e7), "W/m2");
+  } else if (profile == "gaussian") {
+    f.kind = th::FluxProfile::Kind::gaussian;
+    f.q = r.number("q_peak", f.q, Range::closed(0.0, 2e7), "W/m2");
+    f.z_center = r.number("z_center", f.z_center, Range::any(), "m");
+    f.sigma = r.number("sigma", f.sigma, Range::positive(), "m");
+    f.q_base = r.number("q_base", 0.0, Range::closed(0.0, 2e7), "W/m2");
+  } else {
+    f.kind = th::FluxProfile::Kind::table;
+    const std::string path = resolve_path(case_dir, r.string("table_file", ""));
+    try {
+      io::read_flux_table_csv(path, f.table_z, f.table_q);
+      f.check();
+    } catch (const std::exception& e) {
+      r.fail("table_file", e.what());
+    }
+  }
+  // Solar absorption: Beer-Lambert below the surface (default; depth in particle diameters,
+  // by default from the bed's solid fraction, thermal/film_model.hpp), uniform over n layers,
+  // or at the surface.
+  const std::string absorption =
+      r.choice("absorption", r.has("absorb_depth_layers") ? "layers" : "extinction", {"extinction", "layers", "surface"});
+  if (absorption == "layers")
+    m.surface.absorb_depth_layers = r.number("absorb_depth_layers", 0.0, Range::closed(0.0, 20.0), "particle diameters");
+  if (absorption == "extinction")
+    m.surface.extinction_depth_d = r.number("extinction_depth_d", -1.0, Range::closed(-1.0, 20.0), "particle diameters");
+  if (m.surface.extinction_depth_d == 0.0 && absorption == "extinction")
+    r.fail("extinction_depth_d", "must be > 0 (or omitted for the value from the solid fraction)");
+  m.flux_time = read_time_factor(r.child("time"));
+  r.finish();
+}
+
+void read_conductivity(MapReader r, th::FilmModel& m) {
+  const std::string model = r.choice("model", "zbs", {"zbs", "constant"});
+  if (model == "constant") m.conductivity.k_constant = r.required_number("k", Range::positive(), "W/(m K)");
+  m.bed.shape_factor = r.number("shape_factor", m.bed.shape_factor, Range::positive());
+  m.bed.flattening = r.number("flattening", m.bed.flattening, Range::closed(0.0, 1.0));
+  m.bed.radiation = r.boolean("radiation", true);
+  m.conductivity.mixing = r.boolean("mixing", true);
+  const std::string axial = r.choice("axial", "bed", {"bed", "bed_and_mixing", "none"});
+  m.conductivity.axial = axial == "none" ? th::ConductivitySettings::Axial::none
+                         : axial == "bed" ? th::ConductivitySettings::Axial::bed
+                                          : th::ConductivitySettings::Axial::bed_and_mixing;
+  r.finish();
+}
+
+void read_solver(MapReader r, ThermalCase& c) {
+  th::IntegratorSettings& in = c.steady.integrator;
+  // Ranges are what double precision and BDF can deliver (1e-30 is refused here).
+  in.rtol = r.number("rtol", 1e-5, Range::closed(1e-12, 1e-2));
+  in.atol = r.number("atol", 1e-3, Range::closed(1e-10, 10.0), "K");
+  in.max_steps = r.integer("max_steps", 50000, 10, 100000000);
+  in.max_order = static_cast<int>(r.integer("max_order", 5, 1, 5));
+  in.linear_solver = r.choice("linear_solver", "band", {"band", "klu"}) == "klu" ? th::LinearSolver::klu
+                                                                                 : th::LinearSolver::band;
+  c.steady.tolerance = r.number("steady_tolerance", 1e-10, Range::closed(1e-14, 1e-2));
+  c.steady.newton_first = r.boolean("newton_first", true);
+  c.steady.max_time_factor = r.number("max_time_scales", 1e4, Range::closed(1.0, 1e9));
+  c.transient_settings.integrator = in;
+  c.transient_settings.integrator.rtol = r.number("transient_rtol", 1e-6, Range::closed(1e-12, 1e-2));
+  r.finish();
+}
+}  // namespace
+
+void read_thermal_sections(MapReader& root, const std::string& case_dir, ThermalCase& c, bool film_from_dem) {
+  MapReader t = root.child("thermal");
+  th::FilmModel& m = c.model;
+  m.material = read_material(t.child("material"));
+  if (film_from_dem && !root.has("film"))
+    c.film_source = "dem";
+  else
+    read_film(root.child("film"), case_dir, m.material.d, c);
+
+  const std::string model = t.choice("model", "2d", {"2d", "1d"});
+  c.grid.lumped = model == "1d";
+  MapReader g = t.child("grid");
+  c.grid.nz = static_cast<int>(g.integer("nz", 200, 2, 100000));
+  if (!c.grid.lumped) c.grid.nxi = static_cast<int>(g.integer("nxi", 40, 2, 2000));
+  g.finish();
+  c.grid.advection = t.choice("advection", "upwind", {"upwind", "van_leer"}) == "upwind" ? th::Advection::upwind
+                                                                                         : th::Advection::van_leer;
+  m.T_in = t.number("T_in", 873.15, kTemperature, "K");
+  read_conductivity(t.child("conductivity"), m);
+  MapReader hc = t.child("heat_capacity");
+  if (hc.choice("model", "bauxite", {"bauxite", "constant"}) == "constant")
+    m.heat.cp_constant = hc.required_number("cp", Range::positive(), "J/(kg K)");
+  hc.finish();
+  read_flux(t.child("flux"), case_dir, m);
+  MapReader rad = t.child("radiation");
+  th::CavitySettings& cav = m.cavity;
+  cav.enabled = rad.choice("model", "cavity", {"cavity", "open_surface"}) == "cavity";
+  if (cav.enabled) {
+    cav.aperture_diameter = rad.number("aperture_diameter", 0.0, Range::closed(0.0, 100.0), "m (0 = drum diameter)");
+    cav.rings = static_cast<int>(rad.integer("rings", 25, 1, 2000));
+    cav.wall_absorptance = rad.number("wall_absorptance", cav.wall_absorptance, Range::open_closed(0.0, 1.0));
+    cav.wall_emissivity = rad.number("wall_emissivity", cav.wall_emissivity, Range::open_closed(0.0, 1.0));
+    cav.convection_correlation = rad.choice("convection", "correlation", {"correlation", "h_conv"}) == "correlation";
+    cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg") * 3.14159265358979323846 / 180.0;
+  }
+  rad.finish();
+  MapReader s = t.child("surface");
+  if (cav.enabled && s.has("loss_factor"))
+    s.fail("loss_factor", "applies to the open-surface model only (thermal.radiation.model: open_surface); the "
+                          "cavity model computes what the cavity returns");
+  m.surface.loss_factor = cav.enabled ? 1.0 : s.number("loss_factor", 1.0, Range::closed(0.0, 1.0));
+  m.surface.T_env = s.number("T_env", 300.0, kTemperature, "K");
+  m.surface.h_conv = s.number("h_conv", 10.0, Range::closed(0.0, 1e4), "W/(m2 K)");
+  m.surface.T_air = s.number("T_air", 300.0, kTemperature, "K");
+  s.finish();
+  MapReader w = t.child("wall");
+  m.wall.adiabatic = w.boolean("adiabatic", false);
+  if (!m.wall.adiabatic) {
+    m.wall.U_w = w.number("U_w", 1.0, Range::open_closed(0.0, 1e5), "W/(m2 K)");
+    m.wall.T_amb = w.number("T_amb", 300.0, kTemperature, "K");
+  }
+  w.finish();
+  read_solver(t.child("solver"), c);
+  if (t.has("transient")) {
+    MapReader tr = t.child("transient");
+    c.transient = true;
+    c.transient_settings.t_end = tr.required_number("t_end", Range::open_closed(0.0, 1e7), "s");
+    c.transient_settings.n_outputs = static_cast<int>(tr.integer("n_outputs", 121, 2, 100000));
+    m.flow_time = read_time_factor(tr.child("mass_flow"));
+    tr.finish();
+  } else if (m.flux_time.kind != th::TimeFactor::Kind::constant) {
+    t.fail("flux", "has a time history (flux.time) but the case has no thermal.transient section to run it");
+  }
+  t.finish();
+}
+
+std::string case_directory(const std::string& case_path) {
+  const std::size_t slash = case_path.rfind('/');
+  return slash == std::string::npos ? "" : case_path.substr(0, slash);
+}
+
+ThermalCase read_thermal_case(const std::string& path) {
+  MapReader root = MapReader::from_file(path);
+  ThermalCase c;
+  c.path = path;
+  c.title = root.string("title", "");
+  read_thermal_sections(root, case_directory(path), c);
+  root.finish();
+  c.resolved_yaml = root.resolved_text();
+  return c;
+}
+
+}  // namespace centrec::config

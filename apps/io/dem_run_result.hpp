@@ -1,0 +1,39 @@
+#pragma once
+// What a DEM run hands to its outputs (dem_run_report, dem_output_h5), whichever
+// engine produced it: counts, timings, the mass-flow log, the sampled film fields
+// and the particle snapshots. Engine-neutral: no reference to the native scene.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/scene_sampler.hpp"
+
+namespace centrec::io {
+
+struct NamedSnapshot {
+  std::string name;  // group name, e.g. "t0.500000"
+  dem::scene::SnapshotArrays data;
+};
+
+struct DemRunResult {
+  std::string engine = "centrec";  // "centrec" (native) or "liggghts"
+  std::string engine_version;
+  int threads = 1;  // threads per process
+  int ranks = 1;    // MPI processes
+  double simulated_time = 0.0;  // s
+  double dt = 0.0;              // s
+  std::int64_t steps = 0;
+  std::int64_t free_particles = 0, glued_particles = 0;
+  double holdup_kg = 0.0;
+  std::vector<dem::scene::MassFlowSample> mass_flow;  // cumulative, one entry per batch/dump
+  std::int64_t feeder_deferred = 0;   // feeder insertions postponed for lack of room (< 0: unknown, null)
+  double contacts_per_particle = -1.0;  // < 0: the engine did not report it (null in JSON)
+  double particle_steps = 0.0;
+  double wall_time = 0.0;  // s
+  std::vector<dem::scene::ControllerWindow> controller;  // slice holdup controller windows
+  dem::scene::FilmFields fields;
+  std::vector<NamedSnapshot> snapshots;
+};
+
+}  // namespace centrec::io

@@ -1,0 +1,110 @@
+#include "runs/coupled_output.hpp"
+
+#include <algorithm>
+
+#include "io/film_field_h5.hpp"
+#include "io/h5_file.hpp"
+#include "runs/thermal_output.hpp"
+
+namespace centrec::runs {
+
+namespace {
+void write_coupling_group(io::H5File& f, const CoupledRun& r) {
+  f.create_group("/coupling");
+  f.set_attribute("/coupling", "film_source", r.thermal.film_source);
+  if (!r.film_from_dem) return;
+  const auto& c = r.conservation;
+  f.set_attribute("/coupling", "dem_cache_key", r.cache_key);
+  f.set_attribute("/coupling", "dem_mdot_kg_s", r.averages.mdot);
+  f.set_attribute("/coupling", "imposed_mdot_kg_s", c.mdot);
+  f.set_attribute("/coupling", "drum_radius_m", c.drum_radius);
+  f.set_attribute("/coupling", "mean_flux_depth_m", c.mean_flux_depth);
+  f.set_attribute("/coupling", "planar_diameter_m", c.planar_diameter);
+  f.set_attribute("/coupling", "max_cylindrical_flux_error", c.max_cylindrical_error);
+  f.set_attribute("/coupling", "moving_fraction", r.tangential.moving_fraction);
+  f.set_attribute("/coupling", "tangential_velocity_factor", r.tangential.velocity_factor);
+  f.set_attribute("/coupling", "scaling", r.thermal.film.scaling);
+  f.write("/coupling/sampled_flux_over_mdot", c.sampled_over_mdot, "1");
+  f.write("/coupling/dem_section_z", r.averages.section_z, "m");
+  f.write("/coupling/dem_thickness", r.averages.thickness, "m");
+  f.write("/coupling/dem_thickness_std", r.averages.thickness_std, "m");
+  f.write("/coupling/profile_z", r.tangential.profile_z, "m");
+  f.write("/coupling/profile_flux_over_mdot", r.tangential.profile_flux_over_mdot, "1");
+}
+}  // namespace
+
+void write_coupled_h5(const std::string& dir, const CoupledRun& r) {
+  io::H5File f = io::H5File::create(dir + "/results.h5");
+  write_thermal_groups(f, r.thermal, r.result);
+  write_coupling_group(f, r);
+  f.commit();
+  io::H5File film = io::H5File::create(dir + "/film.h5");
+  io::write_film_field(film, r.thermal.film, "/film");
+  film.commit();
+}
+
+nlohmann::json coupled_summary(const CoupledRun& r) {
+  nlohmann::json j = thermal_summary(r.thermal, r.result);
+  const thermal::FilmField& f = r.thermal.film;
+  const double d = f.particle_diameter > 0.0 ? f.particle_diameter : r.thermal.model.material.d;
+  double t_sum = 0.0;
+  for (double t : f.t) t_sum += t;
+  j["film"] = {{"source", r.thermal.film_source},
+               {"mean_thickness_m", t_sum / f.t.size()},
+               {"mean_thickness_d", t_sum / f.t.size() / d},
+               {"min_thickness_d", *std::min_element(f.t.begin(), f.t.end()) / d},
+               {"max_thickness_d", *std::max_element(f.t.begin(), f.t.end()) / d},
+               {"length_m", f.length},
+               {"mdot_kg_s", f.mdot},
+               {"scaling", f.scaling}};
+  j["wall_time_s"] = {{"dem", r.dem_seconds},
+                      {"coupling", r.mapping_seconds},
+                      {"thermal", r.thermal_seconds},
+                      {"total", r.dem_seconds + r.mapping_seconds + r.thermal_seconds}};
+  if (!r.film_from_dem) return j;
+  const auto& c = r.conservation;
+  const auto& sd = r.dem.scene;
+  j["dem"] = {{"cached", r.dem_cached},
+              {"resumed_from", r.dem_resumed_from},
+              {"cache_key", r.cache_key},
+              {"dir", r.dem_dir},
+              {"drum_diameter_m", sd.drum.diameter},
+              {"drum_length_m", sd.drum.length},
+              {"speed_rpm", coupling::rad_per_s_to_rpm(sd.drum.omega)},
+              {"feeder_mdot_kg_s", sd.feeder.mass_flow},
+              {"outlet_mdot_kg_s", r.averages.mdot},
+              {"sampled_turns", r.averages.sampled_turns},
+              {"summary", r.dem_summary}};
+  double lo = 1e300, hi = -1e300;
+  for (double x : c.sampled_over_mdot) lo = std::min(lo, x), hi = std::max(hi, x);
+  j["coupling"] = {{"imposed_mdot_kg_s", c.mdot},
+                   {"sampled_flux_over_mdot_min", lo},
+                   {"sampled_flux_over_mdot_max", hi},
+                   {"max_cylindrical_flux_error", c.max_cylindrical_error},
+                   {"mean_flux_depth_m", c.mean_flux_depth},
+                   {"planar_diameter_m", c.planar_diameter},
+                   {"moving_fraction", r.tangential.moving_fraction},
+                   {"tangential_velocity_factor", r.tangential.velocity_factor},
+                   {"filled_bins", r.tangential.filled_bins},
+                   {"profile_z_m", r.tangential.profile_z},
+                   {"dem_profile_flux_over_mdot", r.tangential.profile_flux_over_mdot}};
+  if (r.has_receiver) {
+    const auto& s = r.scale;
+    j["scaling"] = {{"receiver_diameter_m", r.receiver.op.diameter},
+                    {"receiver_length_m", r.receiver.op.length},
+                    {"receiver_speed_rpm", coupling::rad_per_s_to_rpm(r.receiver.op.omega)},
+                    {"receiver_mdot_kg_s", r.receiver.op.mass_flow},
+                    {"dem_derived", r.receiver.dem_diameter_d > 0.0},
+                    {"length_ratio", s.length_ratio},
+                    {"radius_ratio", s.radius_ratio},
+                    {"omega_ratio", s.omega_ratio},
+                    {"mdot_ratio", s.mdot_ratio},
+                    {"eq1_error", s.eq1_error},
+                    {"eq2_error", s.eq2_error},
+                    {"eq3_error", s.eq3_error},
+                    {"description", s.description}};
+  }
+  return j;
+}
+
+}  // namespace centrec::runs

@@ -1,0 +1,17 @@
+#pragma once
+// Outputs of `centrec run` (issue 5 item 3): DIR/results.h5 (the thermal groups of
+// thermal.h5, the coupled film /film, and /coupling: mapping and scaling records),
+// DIR/film.h5 (the film field alone, reusable as `film: {file: DIR/film.h5}`) and
+// DIR/summary.json (outlet temperature, efficiency, k_eff and its parts, film thickness,
+// mdot, scaling, wall time per stage).
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "runs/coupled_run.hpp"
+
+namespace centrec::runs {
+
+void write_coupled_h5(const std::string& dir, const CoupledRun& r);
+nlohmann::json coupled_summary(const CoupledRun& r);
+
+}  // namespace centrec::runs

@@ -1,0 +1,121 @@
+#include "runs/coupled_run.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+
+#include "coupling/dem_film_from_run.hpp"
+#include "io/code_version.hpp"
+#include "io/dem_film_h5.hpp"
+#include "runs/dem_cache.hpp"
+#include "runs/dem_case_run.hpp"
+
+namespace centrec::runs {
+
+namespace {
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The DEM inputs as they will run: receiver derivation, then the command-line overrides.
+void effective_dem(const config::CaseFile& cf, const RunOptions& o, CoupledRun& r) {
+  r.dem = *cf.dem;
+  if (o.threads >= 0) r.dem.scene.threads = o.threads;
+  const bool overridden = o.speed_rpm > 0.0 || o.mass_flow > 0.0;
+  if (cf.receiver) {
+    r.has_receiver = true;
+    r.receiver = *cf.receiver;
+    if (o.speed_rpm > 0.0) r.receiver.op.omega = coupling::rpm_to_rad_per_s(o.speed_rpm);
+    if (o.mass_flow > 0.0) r.receiver.op.mass_flow = o.mass_flow;
+    config::apply_receiver(r.receiver, r.dem, overridden);
+  } else {
+    if (o.speed_rpm > 0.0) r.dem.scene.drum.omega = coupling::rpm_to_rad_per_s(o.speed_rpm);
+    if (o.mass_flow > 0.0) r.dem.scene.feeder.mass_flow = o.mass_flow;
+  }
+}
+
+std::string resolved_dem_section(const config::CaseFile& cf) {
+  YAML::Emitter e;
+  e << YAML::Load(cf.resolved_yaml)["dem"];
+  return e.c_str();
+}
+
+void check_same_particles(const CoupledRun& r) {
+  const auto& m = r.thermal.model.material;
+  const double d = r.dem.scene.particle.diameter, rho = r.dem.scene.particle.material.density;
+  if (std::abs(m.d / d - 1.0) > 1e-9 || std::abs(m.rho_s / rho - 1.0) > 1e-9)
+    throw std::invalid_argument("the thermal particles differ from the DEM's: thermal.material.d = " +
+                                std::to_string(m.d) + " m, rho_s = " + std::to_string(m.rho_s) +
+                                " kg/m3 but dem.particles.diameter = " + std::to_string(d) +
+                                " m, density = " + std::to_string(rho) + " kg/m3; make them equal");
+}
+}  // namespace
+
+CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
+  if (!cf.thermal) throw std::invalid_argument(cf.path + ": a coupled run needs a `thermal:` section");
+  CoupledRun r;
+  r.thermal = *cf.thermal;
+  r.film_from_dem = r.thermal.film_source == "dem";
+  if (!r.film_from_dem && (o.speed_rpm > 0.0 || o.mass_flow > 0.0))
+    throw std::invalid_argument(cf.path + ": --speed-rpm / --mass-flow change the DEM, but this case takes its film "
+                                          "from " + r.thermal.film_source + " (no DEM to rerun)");
+  if (r.film_from_dem) {
+    if (!cf.dem) throw std::invalid_argument(cf.path + ": give a `dem:` section or `film: {file: ...}`");
+    effective_dem(cf, o, r);
+    check_same_particles(r);
+    if (!(r.dem.sampling.turns > 0.0))
+      throw std::invalid_argument(cf.path + ": dem.sampling.turns must be > 0: the coupling needs film fields");
+    // 1. DEM, or its cached outputs.
+    const auto t0 = std::chrono::steady_clock::now();
+    r.cache_key = dem_cache_key(resolved_dem_section(cf), r.dem, centrec::io::code_version());
+    // A DEM run now hands its film over in memory; a cached one is read back from its dem.h5.
+    std::optional<io::DemRunResult> ran;
+    const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key, [&](const std::string& dir, bool resume) {
+      if (resume) std::fprintf(stderr, "centrec run: continuing the interrupted DEM run in %s\n", dir.c_str());
+      ran = run_dem_case(cf, r.dem, dir,
+                         native_engine(resume ? std::optional<io::RunCheckpoint>(io::read_checkpoint(dir)) : std::nullopt));
+    });
+    r.dem_dir = cached.dir;
+    r.dem_cached = cached.hit;
+    r.dem_resumed_from = cached.resumed_from;
+    std::ifstream js(r.dem_dir + "/summary.json");
+    r.dem_summary = nlohmann::json::parse(js);
+    r.dem_seconds = since(t0);
+    // 2. Mapping, scale-up, mass-flux conservation.
+    const auto t1 = std::chrono::steady_clock::now();
+    try {
+      r.averages = ran ? coupling::dem_film_averages(ran->fields, r.dem.scene, ran->mass_flow, r.dem.run.flow_window_turns)
+                       : io::read_dem_film(r.dem_dir + "/dem.h5", r.dem.scene, r.dem.run.flow_window_turns);
+    } catch (const std::exception& e) {
+      // The usual cause: no film formed (too slow a drum for this retention, too short a run).
+      const auto op = config::dem_operating_point(r.dem);
+      throw std::runtime_error(std::string(e.what()) + "; the DEM drum ran at omega^2 R / g = " +
+                               std::to_string(coupling::centrifugal_ratio(op)) + " and ended with a holdup of " +
+                               std::to_string(r.dem_summary.value("holdup_kg", 0.0) * 1e3) + " g");
+    }
+    coupling::MappedFilm mapped = coupling::map_dem_film(r.averages);
+    r.tangential = mapped.tangential;
+    thermal::FilmField film = std::move(mapped.film);
+    double mdot = r.averages.mdot;
+    if (r.has_receiver) {
+      film = coupling::scale_up_film(film, config::dem_operating_point(r.dem), r.receiver.op, &r.scale);
+      mdot *= r.scale.radius_ratio;  // eq (2): the DEM's measured flow carried to the receiver
+    }
+    r.conservation = coupling::conserve_mass_flow(film, r.averages.particle_density, mdot);
+    r.thermal.film = std::move(film);
+    r.thermal.film_source = "dem: " + r.dem_dir + "/dem.h5";
+    r.mapping_seconds = since(t1);
+  }
+  // 3. Thermal.
+  const auto t2 = std::chrono::steady_clock::now();
+  r.result = run_thermal_case(r.thermal);
+  r.thermal_seconds = since(t2);
+  return r;
+}
+
+}  // namespace centrec::runs

@@ -1,0 +1,48 @@
+#pragma once
+// The coupled run behind `centrec run` (issue 5 item 3, DESIGN.md section 1):
+// DEM of the scaled-down drum -> its averaged film (coupling/dem_film_from_run, in memory;
+// read back from dem.h5 when the DEM comes from the cache) ->
+// tangentially averaged film field (coupling/film_mapping) -> scale-up to the receiver
+// (coupling/film_scale_up) -> mass-flux conservation (coupling/film_mass_flow) ->
+// thermal steady state (and transient). A case that gives `film: {file: ...}` skips the DEM.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "config/case_file.hpp"
+#include "coupling/dem_film_averages.hpp"
+#include "coupling/film_mapping.hpp"
+#include "coupling/film_mass_flow.hpp"
+#include "coupling/film_scale_up.hpp"
+#include "runs/thermal_case_run.hpp"
+
+namespace centrec::runs {
+
+struct RunOptions {
+  std::string cache_dir;      // DEM cache root (CACHE/<key>/)
+  double speed_rpm = 0.0;     // > 0: the receiver's (or, without one, the DEM drum's) speed
+  double mass_flow = 0.0;     // > 0: the receiver's (or the DEM feeder's) mass flow, kg/s
+  int threads = -1;           // DEM threads (-1 = from the case)
+};
+
+struct CoupledRun {
+  config::DemCase dem;                     // the DEM actually run (receiver derivation and overrides applied)
+  bool has_receiver = false;
+  config::ReceiverCase receiver;
+  bool film_from_dem = false;      // false: the case's film file was used, no DEM
+  std::string dem_dir, cache_key;  // where dem.h5 came from
+  bool dem_cached = false;
+  std::string dem_resumed_from;  // the killed run's cache folder this run continued ("" = none)
+  nlohmann::json dem_summary;
+  coupling::DemFilmAverages averages;
+  coupling::TangentialAverage tangential;
+  coupling::ScaleUpRecord scale;
+  coupling::MassFlowConservation conservation;
+  config::ThermalCase thermal;             // with the coupled film
+  ThermalRun result;
+  double dem_seconds = 0.0, mapping_seconds = 0.0, thermal_seconds = 0.0;
+};
+
+// Throws std::invalid_argument / std::runtime_error with a clear message on failure.
+CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o);
+
+}  // namespace centrec::runs

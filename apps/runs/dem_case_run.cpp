@@ -1,0 +1,142 @@
+// The native DEM run of a case: spin-up, sampled turns, checkpoints, then the shared outputs.
+#include "runs/dem_case_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/scene_sampler.hpp"
+#include "io/atomic_write.hpp"
+#include "io/code_version.hpp"
+#include "runs/dem_run_report.hpp"
+#include "runs/progress_meter.hpp"
+
+namespace centrec::runs {
+
+io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir,
+                                  const std::optional<io::RunCheckpoint>& ck) {
+  io::ensure_directory(out_dir);
+
+  dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(dc.scene);
+  auto& sim = scene.simulation();
+  std::fprintf(stderr, "centrec dem: %s%s\n  %s\n  dt = %.3g s, %lld glued + %lld free particles, %d thread(s)\n",
+               cf.path.c_str(), ck ? (" resumed at t = " + std::to_string(sim.time()) + " s (" + ck->phase + ")").c_str() : "",
+               sim.time_step_advice().report().c_str(), sim.dt(), static_cast<long long>(scene.glued_particles()),
+               static_cast<long long>(scene.free_particles()), sim.threads());
+
+  const double period = scene.turn_period();
+  const double total = dc.run.duration + dc.sampling.turns * period;
+  ProgressMeter progress(total, dc.run.progress_interval);
+  const double chunk = std::max(sim.dt() * scene.steps_per_batch(), std::min(0.01, dc.run.duration));
+  const double steps_before = ck ? ck->particle_steps : 0.0, wall_before = ck ? ck->wall_time : 0.0;
+  double particle_steps = 0.0;  // this process's
+  auto advance = [&](auto&& body) {
+    const std::int64_t s0 = sim.step_count();
+    const double n0 = static_cast<double>(sim.size());
+    body();
+    particle_steps += 0.5 * (n0 + static_cast<double>(sim.size())) * static_cast<double>(sim.step_count() - s0);
+    progress.update(sim.time(), sim.time() / period, particle_steps);
+  };
+
+  // Checkpoints. The run rebuilds the neighbour lists at fixed points (after every spin-up
+  // chunk and every sampled turn) and checkpoints only there, so whether and when a
+  // checkpoint is written (wall clock) never changes the result, and a resumed run
+  // continues bitwise (Simulation::rebuild_lists).
+  dem::scene::SceneSampler sampler(scene, dc.sampling.sampler);
+  std::vector<io::NamedSnapshot> snapshots;
+  int sampled = ck ? ck->sampled_turns : 0;
+  auto checkpoint_at = std::chrono::steady_clock::now();
+  auto checkpoint = [&](const std::string& phase, bool force) {
+    const auto now = std::chrono::steady_clock::now();
+    const double since = std::chrono::duration<double>(now - checkpoint_at).count();
+    if (!force && !(dc.run.checkpoint_interval > 0.0 && since >= dc.run.checkpoint_interval)) return;
+    io::RunCheckpoint c;
+    c.code_version = centrec::io::code_version();
+    c.case_path = cf.path;
+    c.resolved_yaml = cf.resolved_yaml;
+    c.phase = phase;
+    c.sampled_turns = sampled;
+    c.particle_steps = steps_before + particle_steps;
+    c.wall_time = wall_before + progress.elapsed();
+    c.scene = scene.export_state();
+    if (phase != "spin-up") {
+      c.sampler["state"] = sampler.save();
+      c.start_snapshot = snapshots.front().data;
+    }
+    io::write_checkpoint(out_dir, c);
+    checkpoint_at = std::chrono::steady_clock::now();
+  };
+
+  // Spin-up (filling, reaching steady state), then sampling turn by turn.
+  if (!ck || ck->phase == "spin-up") {
+    while (sim.time() < dc.run.duration - 0.5 * sim.dt()) {
+      advance([&] { scene.advance(std::min(chunk, dc.run.duration - sim.time())); });
+      sim.rebuild_lists();
+      checkpoint("spin-up", false);
+    }
+  }
+  auto keep = [&](dem::scene::SnapshotArrays s) {
+    char name[32];
+    std::snprintf(name, sizeof name, "t%.6f", s.time);
+    snapshots.push_back({name, std::move(s)});
+  };
+  auto keep_snapshot = [&] { keep(dem::scene::take_snapshot(sim)); };
+  if (ck && ck->phase != "spin-up") {
+    sampler.load(ck->sampler.at("state"));
+    keep(ck->start_snapshot.value());
+  } else {
+    keep_snapshot();  // the film as sampling starts
+  }
+  while (sampled < static_cast<int>(std::floor(dc.sampling.turns + 1e-9))) {
+    advance([&] { sampler.sample_turns(scene, 1.0); });
+    ++sampled;
+    sim.rebuild_lists();
+    checkpoint("sampling", false);
+  }
+  if (sim.time() > snapshots.back().data.time) keep_snapshot();
+  progress.update(sim.time(), sim.time() / period, particle_steps, true);
+  progress.finish();
+  checkpoint("done", dc.run.checkpoint_interval > 0.0);
+  particle_steps += steps_before;
+  const double wall = wall_before + progress.elapsed();
+
+  io::DemRunResult r;
+  r.engine = "centrec";
+  r.engine_version = centrec::io::code_version();
+  r.threads = sim.threads();
+  r.simulated_time = sim.time();
+  r.dt = sim.dt();
+  r.steps = sim.step_count();
+  r.free_particles = scene.free_particles();
+  r.glued_particles = scene.glued_particles();
+  r.holdup_kg = scene.holdup_mass();
+  r.mass_flow = scene.mass_flow_log();
+  r.controller = scene.controller_log();
+  r.feeder_deferred = scene.feeder_stats().deferred;
+  r.contacts_per_particle = sim.neighbour_stats().contacts_per_particle();
+  r.particle_steps = particle_steps;
+  r.wall_time = wall;
+  r.fields = sampler.fields();
+  r.snapshots = std::move(snapshots);
+  return r;
+}
+
+DemEngine native_engine(const std::optional<io::RunCheckpoint>& ck) {
+  return [ck](const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir) {
+    return run_dem_natively(cf, dc, out_dir, ck);
+  };
+}
+
+io::DemRunResult run_dem_case(const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir,
+                              const DemEngine& engine) {
+  io::ensure_directory(out_dir);
+  io::DemRunResult r = engine(cf, dc, out_dir);
+  write_dem_run_report(out_dir, cf, dc, r);
+  return r;
+}
+
+}  // namespace centrec::runs

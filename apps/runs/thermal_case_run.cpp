@@ -1,0 +1,33 @@
+#include "runs/thermal_case_run.hpp"
+
+#include <chrono>
+
+namespace centrec::runs {
+
+namespace {
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+ThermalRun run_thermal_case(const config::ThermalCase& c) {
+  ThermalRun r;
+  r.op = std::make_unique<thermal::FilmOperator>(c.film, c.model, c.grid);
+  thermal::FilmOperator& op = *r.op;
+  op.freeze_inputs(true);
+  const auto t0 = std::chrono::steady_clock::now();
+  r.steady = thermal::solve_steady(op, op.uniform_state(c.model.T_in), c.steady);
+  r.steady_seconds = since(t0);
+  r.balance = op.balance(0.0, r.steady.y.data());
+  r.fields = op.fields(0.0, r.steady.y.data());
+  r.keff = op.keff_sections(r.steady.y.data());
+  if (c.transient) {
+    const auto t1 = std::chrono::steady_clock::now();
+    r.transient = thermal::run_transient(op, r.steady.y, c.transient_settings);
+    r.transient_seconds = since(t1);
+    r.has_transient = true;
+  }
+  return r;
+}
+
+}  // namespace centrec::runs

@@ -1,0 +1,29 @@
+#pragma once
+// Runs a thermal case: the steady state of the initial operating point, then the transient
+// if the case has one (DESIGN.md section 9). Shared by `centrec thermal` and the tests.
+#include <memory>
+#include <vector>
+
+#include "config/case_thermal.hpp"
+#include "thermal/film_operator.hpp"
+#include "thermal/steady_state.hpp"
+#include "thermal/transient_run.hpp"
+
+namespace centrec::runs {
+
+struct ThermalRun {
+  std::unique_ptr<thermal::FilmOperator> op;
+  thermal::SteadyResult steady;
+  thermal::FilmBalance balance;          // at the steady state
+  thermal::FilmFields fields;            // at the steady state
+  std::vector<thermal::KeffSection> keff;
+  double steady_seconds = 0.0;           // wall time of the steady solve
+  bool has_transient = false;
+  thermal::TransientResult transient;
+  double transient_seconds = 0.0;
+};
+
+// Throws thermal::SolverError / std::invalid_argument with a clear message on failure.
+ThermalRun run_thermal_case(const config::ThermalCase& c);
+
+}  // namespace centrec::runs

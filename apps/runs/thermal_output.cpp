@@ -1,0 +1,241 @@
+#include "runs/thermal_output.hpp"
+
+#include <cstdio>
+
+#include "io/code_version.hpp"
+#include "io/film_field_h5.hpp"
+#include "io/h5_file.hpp"
+
+namespace centrec::runs {
+
+namespace {
+nlohmann::json stats_json(const thermal::SolverStats& s) {
+  return {{"bdf_steps", s.steps},
+          {"rhs_evaluations", s.rhs_evals},
+          {"newton_iterations", s.newton_iterations},
+          {"newton_convergence_failures", s.newton_failures},
+          {"error_test_failures", s.error_test_failures},
+          {"jacobian_evaluations", s.jacobian_evals},
+          {"linear_solver_setups", s.linear_setups}};
+}
+
+nlohmann::json balance_json(const thermal::FilmBalance& b) {
+  return {{"incident", b.incident},       {"absorbed", b.absorbed},
+          {"emitted", b.emitted},         {"convected", b.convected},
+          {"wall", b.wall},               {"carried_by_particles", b.carried},
+          {"inlet_conduction", b.inlet_conduction}, {"storage_rate", b.storage},
+          {"balance_residual", b.residual}};
+}
+
+// The receiver's power flow (W): what enters through the aperture and where it goes.
+nlohmann::json receiver_json(const config::ThermalCase& c, const thermal::FilmBalance& b) {
+  const double P = b.aperture_power;
+  nlohmann::json j = {{"radiation_model", c.model.cavity.enabled ? "cavity" : "open_surface"},
+                      {"aperture_power_W", P},
+                      {"carried_W", b.carried},
+                      {"reflected_loss_W", b.reflected_loss},
+                      {"emitted_loss_W", b.emitted_loss},
+                      {"convective_loss_W", b.convected + b.walls_convected},
+                      {"wall_loss_W", b.wall + b.walls_insulation},
+                      {"inlet_conduction_W", b.inlet_conduction},
+                      {"storage_rate_W", b.storage},
+                      {"efficiency", b.efficiency},
+                      {"h_convection_W_m2K", b.h_cavity},
+                      {"balance_residual_W", b.receiver_residual},
+                      {"balance_residual_relative", P > 0 ? b.receiver_residual / P : 0.0}};
+  if (c.model.cavity.enabled) {
+    j["cavity_walls_convective_loss_W"] = b.walls_convected;
+    j["cavity_walls_insulation_loss_W"] = b.walls_insulation;
+  } else {
+    j["loss_factor"] = c.model.surface.loss_factor;
+  }
+  return j;
+}
+
+// One named column of a table of records, for writing records as 1D datasets.
+template <class Record>
+struct Column {
+  const char* name;
+  const char* units;
+  double (*get)(const Record&);
+};
+
+template <class Record, std::size_t N>
+void write_columns(io::H5File& f, const std::string& prefix, const std::vector<Record>& rows,
+                   const Column<Record> (&columns)[N]) {
+  for (const Column<Record>& c : columns) {
+    std::vector<double> v;
+    v.reserve(rows.size());
+    for (const Record& r : rows) v.push_back(c.get(r));
+    f.write(prefix + c.name, v, c.units);
+  }
+}
+
+// Film-average of a per-section quantity over the irradiated length (equal sections).
+double section_mean(const std::vector<thermal::KeffSection>& k, double thermal::KeffSection::*m) {
+  double s = 0.0;
+  for (const auto& x : k) s += x.*m;
+  return k.empty() ? 0.0 : s / k.size();
+}
+}  // namespace
+
+void write_thermal_h5(const std::string& path, const config::ThermalCase& c, const ThermalRun& r) {
+  io::H5File f = io::H5File::create(path);
+  write_thermal_groups(f, c, r);
+  f.commit();
+}
+
+void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r) {
+  f.set_attribute("/", "centrec_version", centrec::io::code_version());
+  f.set_attribute("/", "config", c.resolved_yaml);
+  f.set_attribute("/", "case_file", c.path);
+  f.set_attribute("/", "title", c.title);
+  f.set_attribute("/", "film_source", c.film_source);
+  const thermal::FilmGrid& g = r.op->grid();
+  const std::size_t nz = g.nz, nxi = g.nxi;
+  std::vector<double> xi(nxi), eta(nz * nxi);
+  for (std::size_t j = 0; j < nxi; ++j) xi[j] = (j + 0.5) / nxi;
+  for (std::size_t i = 0; i < nz; ++i)
+    for (std::size_t j = 0; j < nxi; ++j) eta[i * nxi + j] = g.eta_center(i, j);
+  f.write("/grid/z", g.zc, "m");
+  f.write("/grid/xi", xi, "1");
+  f.write("/grid/thickness", g.tc, "m");
+  f.write("/grid/eta", eta, {nz, nxi}, "m");
+  f.write("/grid/u", g.u, {nz, nxi}, "m/s");
+  f.write("/grid/phi", g.phi, {nz, nxi}, "1");
+  f.write("/grid/D", g.D, {nz, nxi}, "m2/s");
+  const thermal::FilmFields& fl = r.fields;
+  f.write("/steady/T", fl.T, {nz, nxi}, "K");
+  f.write("/steady/k_n", fl.k_n, {nz, nxi}, "W/(m K)");
+  f.write("/steady/k_bed", fl.k_bed, {nz, nxi}, "W/(m K)");
+  f.write("/steady/k_rad", fl.k_rad, {nz, nxi}, "W/(m K)");
+  f.write("/steady/k_mix", fl.k_mix, {nz, nxi}, "W/(m K)");
+  f.write("/steady/T_surface", fl.T_surface, "K");
+  f.write("/steady/q_absorbed", fl.q_absorbed, "W/m2");
+  f.write("/steady/q_emitted", fl.q_emitted, "W/m2");
+  f.write("/steady/q_convected", fl.q_convected, "W/m2");
+  f.write("/steady/q_wall", fl.q_wall, "W/m2");
+  // Per-section k_eff and the transient series: one column per member, written in a loop.
+  const Column<thermal::KeffSection> keff_columns[] = {
+      {"z", "m", [](const auto& s) { return s.z; }},
+      {"k_eff", "W/(m K)", [](const auto& s) { return s.k_eff; }},
+      {"bed_conduction", "W/(m K)", [](const auto& s) { return s.bed_conduction; }},
+      {"radiation", "W/(m K)", [](const auto& s) { return s.radiation; }},
+      {"mixing", "W/(m K)", [](const auto& s) { return s.mixing; }},
+      {"moving_thickness", "m", [](const auto& s) { return s.moving_thickness; }}};
+  write_columns(f, "/steady/keff/", r.keff, keff_columns);
+  if (!fl.cavity_T.empty()) {
+    // Enclosure surfaces: rings (z = 0 .. L), back plate, front annulus (if any).
+    f.write("/steady/cavity/T", fl.cavity_T, "K");
+    f.write("/steady/cavity/solar_irradiation", fl.cavity_solar_irradiation, "W/m2");
+    f.write("/steady/cavity/thermal_irradiation", fl.cavity_thermal_irradiation, "W/m2");
+  }
+  f.set_attribute("/steady", "T_out_K", r.balance.T_out);
+  f.set_attribute("/steady", "efficiency", r.balance.efficiency);
+  f.set_attribute("/steady", "aperture_power_W", r.balance.aperture_power);
+  f.set_attribute("/steady", "reflected_loss_W", r.balance.reflected_loss);
+  f.set_attribute("/steady", "emitted_loss_W", r.balance.emitted_loss);
+  f.set_attribute("/steady", "convective_loss_W", r.balance.convected + r.balance.walls_convected);
+  f.set_attribute("/steady", "wall_loss_W", r.balance.wall + r.balance.walls_insulation);
+  f.set_attribute("/steady", "receiver_balance_residual_W", r.balance.receiver_residual);
+  if (r.has_transient) {
+    const Column<thermal::TransientSample> series[] = {
+        {"t", "s", [](const auto& s) { return s.t; }},
+        {"T_out", "K", [](const auto& s) { return s.balance.T_out; }},
+        {"absorbed", "W", [](const auto& s) { return s.balance.absorbed; }},
+        {"emitted", "W", [](const auto& s) { return s.balance.emitted; }},
+        {"convected", "W", [](const auto& s) { return s.balance.convected; }},
+        {"wall", "W", [](const auto& s) { return s.balance.wall; }},
+        {"carried", "W", [](const auto& s) { return s.balance.carried; }},
+        {"aperture_power", "W", [](const auto& s) { return s.balance.aperture_power; }},
+        {"reflected_loss", "W", [](const auto& s) { return s.balance.reflected_loss; }},
+        {"emitted_loss", "W", [](const auto& s) { return s.balance.emitted_loss; }},
+        {"efficiency", "1", [](const auto& s) { return s.balance.efficiency; }},
+        {"storage_rate", "W", [](const auto& s) { return s.balance.storage; }},
+        {"T_surface_max", "K", [](const auto& s) { return s.T_surface_max; }},
+        {"mass_flow", "kg/s", [](const auto& s) { return s.balance.mass_flow; }}};
+    write_columns(f, "/transient/", r.transient.samples, series);
+    f.write("/transient/T_final", r.transient.y_end, {nz, nxi}, "K");
+  }
+  io::write_film_field(f, c.film, "/film");
+}
+
+nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r) {
+  const thermal::FilmBalance& b = r.balance;
+  const thermal::FilmGrid& g = r.op->grid();
+  nlohmann::json j;
+  j["centrec_version"] = centrec::io::code_version();
+  j["case"] = c.path;
+  j["title"] = c.title;
+  j["film_source"] = c.film_source;
+  j["model"] = {{"kind", c.grid.lumped ? "1d" : "2d"},
+                {"nz", g.nz},
+                {"nxi", g.nxi},
+                {"advection", c.grid.advection == thermal::Advection::upwind ? "upwind" : "van_leer"}};
+  j["T_in_K"] = c.model.T_in;
+  j["T_out_K"] = b.T_out;
+  j["T_out_C"] = b.T_out - 273.15;
+  j["T_surface_max_K"] = *std::max_element(r.fields.T_surface.begin(), r.fields.T_surface.end());
+  j["mass_flow_kg_s"] = b.mass_flow;
+  j["efficiency"] = b.efficiency;
+  j["powers_W"] = balance_json(b);
+  j["receiver"] = receiver_json(c, b);
+  j["balance_residual_relative"] = b.absorbed > 0 ? b.residual / b.absorbed : 0.0;
+  j["mass_flux_max_correction"] = g.max_flux_correction;
+  nlohmann::json k;
+  k["film_mean"] = {{"k_eff", section_mean(r.keff, &thermal::KeffSection::k_eff)},
+                    {"bed_conduction", section_mean(r.keff, &thermal::KeffSection::bed_conduction)},
+                    {"radiation", section_mean(r.keff, &thermal::KeffSection::radiation)},
+                    {"mixing", section_mean(r.keff, &thermal::KeffSection::mixing)}};
+  // Up to 10 evenly spaced sections (all sections are in thermal.h5 /steady/keff).
+  nlohmann::json sections = nlohmann::json::array();
+  const std::size_t step = std::max<std::size_t>(1, r.keff.size() / 10);
+  for (std::size_t i = step / 2; i < r.keff.size(); i += step) {
+    const auto& s = r.keff[i];
+    sections.push_back({{"z_m", s.z},
+                        {"k_eff", s.k_eff},
+                        {"bed_conduction", s.bed_conduction},
+                        {"radiation", s.radiation},
+                        {"mixing", s.mixing}});
+  }
+  k["sections"] = sections;
+  k["units"] = "W/(m K)";
+  j["k_eff"] = k;
+  j["solver"]["steady"] = stats_json(r.steady.stats);
+  j["solver"]["steady"]["newton_polish_iterations"] = r.steady.newton_iterations;
+  j["solver"]["steady"]["marched"] = r.steady.marched;
+  j["solver"]["steady"]["march_time_s"] = r.steady.march_time;
+  j["solver"]["steady"]["scaled_residual"] = r.steady.residual;
+  j["solver"]["steady"]["wall_time_s"] = r.steady_seconds;
+  if (r.has_transient) {
+    const auto& s = r.transient.samples;
+    double lo = s.front().balance.T_out, hi = lo;
+    for (const auto& x : s) {
+      lo = std::min(lo, x.balance.T_out);
+      hi = std::max(hi, x.balance.T_out);
+    }
+    j["transient"] = {{"t_end_s", s.back().t},
+                      {"T_out_start_K", s.front().balance.T_out},
+                      {"T_out_end_K", s.back().balance.T_out},
+                      {"T_out_min_K", lo},
+                      {"T_out_max_K", hi}};
+    j["solver"]["transient"] = stats_json(r.transient.stats);
+    j["solver"]["transient"]["wall_time_s"] = r.transient_seconds;
+  }
+  return j;
+}
+
+void print_receiver_report(const config::ThermalCase& c, const thermal::FilmBalance& b) {
+  const double P = b.aperture_power;
+  auto pct = [P](double x) { return P > 0 ? 100.0 * x / P : 0.0; };
+  std::printf("  receiver (%s): aperture %.6g W -> carried %.6g W, efficiency %.4f (carried / aperture power)\n",
+              c.model.cavity.enabled ? "cavity" : "open surface", P, b.carried, b.efficiency);
+  std::printf("  losses: reflected %.4g W (%.2f %%), emitted %.4g W (%.2f %%) through the %s, convective %.4g W "
+              "(%.2f %%, h %.3g W/(m2 K)), wall %.4g W (%.2f %%); balance residual %.2e of aperture power\n",
+              b.reflected_loss, pct(b.reflected_loss), b.emitted_loss, pct(b.emitted_loss),
+              c.model.cavity.enabled ? "aperture" : "open surface", b.convected + b.walls_convected,
+              pct(b.convected + b.walls_convected), b.h_cavity, b.wall + b.walls_insulation,
+              pct(b.wall + b.walls_insulation), P > 0 ? b.receiver_residual / P : 0.0);
+}
+
+}  // namespace centrec::runs

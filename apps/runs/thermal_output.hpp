@@ -1,0 +1,22 @@
+#pragma once
+// Outputs of `centrec thermal` (DESIGN.md sections 7, 9): DIR/thermal.h5 (fields with units
+// attributes, the resolved configuration and the code version as root attributes) and the
+// headline figures as JSON for DIR/summary.json.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "config/case_thermal.hpp"
+#include "io/h5_file.hpp"
+#include "runs/thermal_case_run.hpp"
+
+namespace centrec::runs {
+
+void write_thermal_h5(const std::string& path, const config::ThermalCase& c, const ThermalRun& r);
+// The same content into an open file (root attributes, /grid, /steady, /transient, /film).
+void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r);
+nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r);
+// Two printed lines: the receiver's power flow (aperture power, carried, losses through the
+// aperture, convective and wall losses, receiver efficiency, balance residual).
+void print_receiver_report(const config::ThermalCase& c, const thermal::FilmBalance& b);
+
+}  // namespace centrec::runs
