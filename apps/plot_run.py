@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots of a coupled `centrec run` (issue 5 item 3).
+"""Plots of a coupled `centrec run`.
 
 Usage: /usr/bin/python3 apps/plot_run.py OUT_DIR
 Reads OUT_DIR/results.h5 and writes

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Charts of a `centrec sweep` (issue 5 item 4): the operating map.
+"""Charts of a `centrec sweep`: the operating map.
 
 Usage: /usr/bin/python3 apps/plot_sweep.py OUT_DIR
 Reads OUT_DIR/sweep.json and writes

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots of a `centrec thermal` run (DESIGN.md section 7).
+"""Plots of a `centrec thermal` run (docs/outputs.md).
 
 Usage: /usr/bin/python3 apps/plot_thermal.py OUT_DIR
 Reads OUT_DIR/thermal.h5 and writes

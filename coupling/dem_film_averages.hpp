@@ -1,6 +1,6 @@
 #pragma once
 // The DEM's averaged film fields as the coupling reads them (what `centrec dem` writes to
-// dem.h5 /film, DESIGN.md section 5), plus the DEM drum's operating point. Plain data, SI
+// dem.h5 /film, docs/film_sampling.md), plus the DEM drum's operating point. Plain data, SI
 // units; wall distances of the profile bins in particle diameters d, as the samplers give
 // them. Made from a DEM run by coupling/dem_film_from_run; a cached run's dem.h5 is read
 // back at the program's edge (apps/io/dem_film_h5).

@@ -1,5 +1,5 @@
 #pragma once
-// DEM averages -> the thermal model's film field (DESIGN.md section 10, issue 5 item 1).
+// DEM averages -> the thermal model's film field (docs/coupling.md).
 //
 // Tangential averaging: the thermal film is the film averaged over one drum turn.
 //  - thickness t(z): the DEM's ring thickness per axial section (already a turn average);

@@ -1,5 +1,5 @@
 #pragma once
-// Mass flux of a film field and its conservation (DESIGN.md section 10):
+// Mass flux of a film field and its conservation (docs/coupling.md):
 //   mdot = 2 pi rho_s integral_0^t phi u (R - eta) d eta     (the cylindrical film)
 // The thermal model is planar per unit width with perimeter pi * drum_diameter
 // (thermal/film_grid.hpp), i.e. it would carry pi D rho_s integral(phi u). The two agree

@@ -1,6 +1,6 @@
 #pragma once
 // Scale-up of a film field from the simulated (scaled-down) drum to the actual receiver
-// (DESIGN.md section 6, issue 5 item 2): the particles are the same, so u(eta / d), t / d,
+// (docs/scaling.md): the particles are the same, so u(eta / d), t / d,
 // phi(eta / d) and D(eta / d) carry over unchanged and axial positions stretch by
 // L_act / L_sim. The operating point (diameter, length, omega, mdot) becomes the
 // receiver's. The film's mass flux is not touched: conserve_mass_flow then imposes the

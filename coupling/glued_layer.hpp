@@ -1,5 +1,5 @@
 #pragma once
-// Solid fraction of the glued rough-wall monolayer (DESIGN.md section 4) per wall-distance
+// Solid fraction of the glued rough-wall monolayer (docs/centrec_scene.md) per wall-distance
 // bin. The DEM's solid-fraction sampler sees only the free particles, but the glued spheres
 // are part of the film the heat crosses (the film thickness of eqs 4-7 counts from the
 // wall), so the mapping adds them back. Planar approximation (sphere << drum radius): a

@@ -1,5 +1,5 @@
 #pragma once
-// History of one contact (DESIGN.md section 3): the Mindlin tangential spring and the
+// History of one contact (docs/dem_physics.md): the Mindlin tangential spring and the
 // EPSD2 rolling spring. All zero means "not in contact".
 #include "dem/vec3.hpp"
 

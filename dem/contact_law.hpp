@@ -1,6 +1,6 @@
 #pragma once
 // The one contact law used for particle-particle and particle-wall contacts
-// (DESIGN.md sections 3 and 11): Hertz + Mindlin + EPSD2 as a pure inline function.
+// (docs/dem_physics.md and docs/architecture.md): Hertz + Mindlin + EPSD2 as a pure inline function.
 // The neighbour loop, threading and history storage live elsewhere (simulation.cpp).
 #include "dem/contact_history.hpp"
 #include "dem/epsd2_rolling.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// EPSD2 rolling resistance (DESIGN.md section 3; LIGGGHTS 3.x rolling_model_epsd2.h):
+// EPSD2 rolling resistance (docs/dem_physics.md; LIGGGHTS 3.x rolling_model_epsd2.h):
 // kr = kt R*^2, elastic-plastic spring torque, no dashpot.
 #include <cmath>
 

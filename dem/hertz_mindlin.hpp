@@ -1,6 +1,6 @@
 #pragma once
 // Hertz normal force with damping and Mindlin no-slip tangential force with history and
-// a Coulomb cap: DESIGN.md section 3, as LIGGGHTS 3.x normal_model_hertz.h and
+// a Coulomb cap: docs/dem_physics.md, as LIGGGHTS 3.x normal_model_hertz.h and
 // tangential_model_history.h compute them.
 #include <cmath>
 

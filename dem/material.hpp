@@ -1,5 +1,5 @@
 #pragma once
-// Material and material-pair parameters of the contact law (DESIGN.md section 3).
+// Material and material-pair parameters of the contact law (docs/dem_physics.md).
 #include <cmath>
 
 namespace centrec::dem {

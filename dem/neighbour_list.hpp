@@ -1,6 +1,6 @@
 #pragma once
 // Cell grid, spatial sort and half Verlet neighbour lists with contact history
-// (DESIGN.md section 3). Pair (i, j), i < j by index, is stored once, in row i, with its
+// (docs/dem_physics.md). Pair (i, j), i < j by index, is stored once, in row i, with its
 // history (the shares on j are routed by partner_routing.hpp).
 // History is kept in the pair's canonical orientation (lower particle id = "i" of the
 // contact law), so re-sorting never flips it.

@@ -1,5 +1,5 @@
 #pragma once
-// The DEM engine's public API (DESIGN.md section 3): spheres, velocity Verlet with
+// The DEM engine's public API (docs/dem_physics.md): spheres, velocity Verlet with
 // rotation (LIGGGHTS nve/sphere), gravity, Hertz-Mindlin-EPSD2 contacts with particles
 // and analytic walls, cell + Verlet neighbour lists with contact-history carry-over,
 // spatial sorting, OpenMP threads, time-step advisor and blow-up detection.
@@ -36,7 +36,7 @@ namespace centrec::dem {
 
 struct FirstHalfStep;  // dem/first_half_step.hpp
 
-// Rolling model of particle-wall contacts (DESIGN.md section 3).
+// Rolling model of particle-wall contacts (docs/dem_physics.md).
 enum class WallRolling : std::uint8_t {
   relative,  // w_rel = w_i - wall angular velocity (physical; default)
   liggghts,  // w_rel = w_i (LIGGGHTS 3.8 mesh walls pass only a linear wall velocity)

@@ -1,4 +1,4 @@
-// The force pass of Simulation (DESIGN.md section 3): Hertz-Mindlin-EPSD2 for every
+// The force pass of Simulation (docs/dem_physics.md): Hertz-Mindlin-EPSD2 for every
 // pair of the half neighbour list and every candidate wall, summed deterministically.
 #include <algorithm>
 #include <cmath>

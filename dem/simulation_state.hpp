@@ -1,5 +1,5 @@
 #pragma once
-// The engine's full dynamic state, for checkpoints (DESIGN.md section 7): everything a
+// The engine's full dynamic state, for checkpoints (docs/outputs.md): everything a
 // Simulation needs to continue a run as if it had never stopped. Particles are listed in
 // the engine's current index order (the spatial order of the last neighbour-list
 // rebuild); contact histories are keyed by particle ids, in the pair's canonical

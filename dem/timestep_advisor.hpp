@@ -1,5 +1,5 @@
 #pragma once
-// Time-step advisor (DESIGN.md section 3): Rayleigh time and Hertz contact time, the
+// Time-step advisor (docs/dem_physics.md): Rayleigh time and Hertz contact time, the
 // default dt and the stability bound a user dt must respect.
 #include <string>
 

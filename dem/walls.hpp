@@ -1,5 +1,5 @@
 #pragma once
-// Analytic walls (DESIGN.md sections 3-4): infinite plane, cylinder interior with an
+// Analytic walls (docs/dem_physics.md and docs/centrec_scene.md): infinite plane, cylinder interior with an
 // axial extent, and a flat disc/annulus plate (two-sided, zero thickness: back plate,
 // outlet lip, annular weir of inner radius R - h). Each wall may translate (velocity) and
 // spin about its own symmetry axis through `origin` (angular_velocity); the surface

@@ -1,6 +1,6 @@
 #pragma once
 // Conductivity of air at 1 bar as a function of temperature (the interstitial gas of the
-// bed; DESIGN.md section 9 asks for a T-dependent gas conductivity).
+// bed; docs/thermal_model.md asks for a T-dependent gas conductivity).
 
 namespace centrec::thermal {
 

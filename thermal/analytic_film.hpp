@@ -1,5 +1,5 @@
 #pragma once
-// The analytic film of DESIGN.md section 9: thickness t, solid fraction phi uniform,
+// The analytic film of docs/thermal_model.md: thickness t, solid fraction phi uniform,
 // u = 0 within one particle diameter of the wall and linear from there to u_surface at
 // eta = t (the paper's suggested profile); an optional wall-normal dispersion D either
 // uniform or proportional to the local shear rate, D = c gamma_dot d^2.

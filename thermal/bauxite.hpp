@@ -1,5 +1,5 @@
 #pragma once
-// Sintered bauxite (CARBO HSP) property defaults, DESIGN.md section 9.
+// Sintered bauxite (CARBO HSP) property defaults, docs/thermal_model.md.
 
 namespace centrec::thermal {
 

@@ -1,7 +1,6 @@
 #pragma once
 // Effective conductivity of a packed bed of spheres without flow: Zehner-Bauer-Schluender
-// model with the radiation term, in the VDI Heat Atlas form (chapter D6.3), DESIGN.md
-// section 9. The gas is air at 1 bar; the Smoluchowski (rarefaction) correction is
+// model with the radiation term, in the VDI Heat Atlas form (chapter D6.3), docs/thermal_model.md. The gas is air at 1 bar; the Smoluchowski (rarefaction) correction is
 // neglected because the modified free path (< 1 um) is tiny against mm particles.
 
 namespace centrec::thermal {

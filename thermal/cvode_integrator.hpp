@@ -1,6 +1,6 @@
 #pragma once
 // SUNDIALS CVODE (BDF, Newton iteration, band or KLU sparse direct linear solver) over an OdeSystem
-// (DESIGN.md sections 9 and 11: the integrator knows nothing of films). Failures become
+// (docs/thermal_model.md and docs/architecture.md: the integrator knows nothing of films). Failures become
 // SolverError messages naming the time, the CVODE flag and a likely cause.
 #include <memory>
 #include <stdexcept>

@@ -1,5 +1,5 @@
 // Receiver totals, output fields and effective conductivity of the film operator
-// (DESIGN.md section 9 outputs). The boundary powers are summed from the boundary faces
+// (docs/thermal_model.md outputs). The boundary powers are summed from the boundary faces
 // only, independently of the cell residuals, so the balance residual tests conservation.
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // The film field: the one plain data type between the DEM side (via coupling) and the
-// thermal model (DESIGN.md section 10). SI units throughout, no behaviour beyond checks and
+// thermal model (docs/coupling.md). SI units throughout, no behaviour beyond checks and
 // interpolation; the coupling layer fills it, or analytic_film() builds one from YAML.
 //
 // Layout: axial sections z[i] (i < nz), wall-distance points eta[j] (j < neta, from 0 at
@@ -21,7 +21,7 @@ struct FilmField {
   std::vector<double> D;     // wall-normal dispersion, m2/s   [nz * neta]
   std::vector<double> u_std, phi_std, D_std;  // standard deviations over turns (may be empty)
 
-  // Case metadata (DESIGN.md section 10).
+  // Case metadata (docs/coupling.md).
   double drum_diameter = 0.0;  // m (inner diameter of the rotating cylinder)
   double length = 0.0;         // m (axial length)
   double omega = 0.0;          // rad/s

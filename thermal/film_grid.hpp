@@ -1,6 +1,5 @@
 #pragma once
-// The finite-volume grid on (z, xi = eta / t(z)) built from a film field (DESIGN.md
-// section 9). Cells are the quadrilaterals between axial faces z_i and xi-lines; all
+// The finite-volume grid on (z, xi = eta / t(z)) built from a film field (docs/thermal_model.md). Cells are the quadrilaterals between axial faces z_i and xi-lines; all
 // quantities are per unit circumferential width (planar film, t << drum radius) and
 // multiplied by pi * D_drum for receiver totals.
 //

@@ -1,6 +1,6 @@
 #pragma once
 // Everything the film energy equation needs besides the film field and the grid
-// (DESIGN.md section 9): material, conductivity model, solar flux and its time history,
+// (docs/thermal_model.md): material, conductivity model, solar flux and its time history,
 // surface / wall / inlet conditions. Plain structs with the design defaults; the YAML
 // reader at the program's edge fills them.
 #include <functional>

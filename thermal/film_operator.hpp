@@ -1,7 +1,6 @@
 #pragma once
-// The film energy equation discretised by finite volumes on the film grid (DESIGN.md
-// section 9), exposed as an OdeSystem (right-hand side and Jacobian; the integrator is
-// separate, DESIGN.md section 11). Unknown: T per cell, index i * nxi + j (z-major, so the
+// The film energy equation discretised by finite volumes on the film grid (docs/thermal_model.md), exposed as an OdeSystem (right-hand side and Jacobian; the integrator is
+// separate, docs/architecture.md). Unknown: T per cell, index i * nxi + j (z-major, so the
 // Jacobian is banded with half-width nxi, or 2 nxi below the diagonal for the limited
 // advection scheme).
 //
@@ -61,8 +60,7 @@ struct FilmFields {
   std::vector<double> cavity_T, cavity_solar_irradiation, cavity_thermal_irradiation;  // K, W/m2, W/m2
 };
 
-// Effective wall-normal conductivity of the moving film per axial section (DESIGN.md
-// section 9): series value t_m / integral(d eta / k) over the cells with u > 0, and its
+// Effective wall-normal conductivity of the moving film per axial section (docs/thermal_model.md): series value t_m / integral(d eta / k) over the cells with u > 0, and its
 // additive parts: k_eff = bed_without_radiation + radiation + mixing.
 struct KeffSection {
   double z = 0.0, moving_thickness = 0.0;

@@ -1,6 +1,6 @@
 #pragma once
 // Concentrated solar flux on the film surface along the axis, q(z) in W/m2
-// (DESIGN.md section 9): uniform, Gaussian about a centre, or a table (z, q) interpolated
+// (docs/thermal_model.md): uniform, Gaussian about a centre, or a table (z, q) interpolated
 // linearly (held constant beyond its ends). The table is filled by the caller (the CSV
 // reader lives at the program's edge).
 #include <string>

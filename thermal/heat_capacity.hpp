@@ -1,5 +1,5 @@
 #pragma once
-// Specific heat and enthalpy of the particles: bauxite c_p(T) (DESIGN.md section 9) or a
+// Specific heat and enthalpy of the particles: bauxite c_p(T) (docs/thermal_model.md) or a
 // constant (analytic tests). Enthalpy is the exact integral of c_p, so energy balances and
 // the outlet mixing-cup temperature are exact for the power law.
 

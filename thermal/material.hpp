@@ -1,5 +1,5 @@
 #pragma once
-// Particle and bed material parameters (DESIGN.md section 9 defaults: sintered bauxite,
+// Particle and bed material parameters (docs/thermal_model.md defaults: sintered bauxite,
 // paper Table 1). Plain value type; the YAML reader at the edge overrides fields.
 
 namespace centrec::thermal {

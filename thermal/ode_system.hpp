@@ -1,6 +1,6 @@
 #pragma once
 // A method-of-lines system dy/dt = f(t, y) with a banded Jacobian: what the time
-// integrator and the steady-state solver see (DESIGN.md section 11, MFEM's
+// integrator and the steady-state solver see (docs/architecture.md, MFEM's
 // TimeDependentOperator pattern). Integrators know nothing of films.
 #include <functional>
 #include <vector>

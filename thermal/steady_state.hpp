@@ -1,5 +1,5 @@
 #pragma once
-// Steady state of an OdeSystem (DESIGN.md section 9): march with CVODE until the scaled
+// Steady state of an OdeSystem (docs/thermal_model.md): march with CVODE until the scaled
 // residual is small, then polish with damped Newton steps on f(y) = 0 using the same band
 // Jacobian and the SUNDIALS band LU, until the residual is below the tolerance. If Newton
 // stalls, marching resumes from the best state. Optionally damped Newton is tried first

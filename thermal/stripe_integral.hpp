@@ -1,7 +1,7 @@
 #pragma once
 // Exact integrals over a wall-distance interval of the piecewise-linear film field data:
 // the mass flux per unit width of one grid stripe needs integral(phi u d eta), which must be
-// exact so that the discrete mass flow equals the film's (conservation, DESIGN.md section 9).
+// exact so that the discrete mass flow equals the film's (conservation, docs/thermal_model.md).
 #include "film_field.hpp"
 
 namespace centrec::thermal {

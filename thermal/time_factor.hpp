@@ -1,6 +1,6 @@
 #pragma once
 // A dimensionless factor f(t) that scales a boundary input in time: the solar flux
-// (flux step, passing cloud) or the film velocity (mass-flow change), DESIGN.md section 9.
+// (flux step, passing cloud) or the film velocity (mass-flow change), docs/thermal_model.md.
 //   constant: f = 1
 //   step:     f goes from 1 to `level` at t_start over a linear ramp of `ramp` seconds
 //   pulse:    f goes from 1 to `level` at t_start and back to 1 at t_end (a cloud), each

@@ -1,5 +1,5 @@
 #pragma once
-// Transient of the film (DESIGN.md section 9): a flux step, a passing cloud or a change of
+// Transient of the film (docs/thermal_model.md): a flux step, a passing cloud or a change of
 // mass flow, as time factors in the FilmModel, integrated with CVODE from a given state
 // (normally the steady state of the initial operating point). The integrator restarts at
 // every kink of the time factors so that no BDF step straddles one.

@@ -1,4 +1,4 @@
-// `centrec run CASE.yaml --out DIR`: the coupled DEM -> coupling -> thermal run (issue 5).
+// `centrec run CASE.yaml --out DIR`: the coupled DEM -> coupling -> thermal run.
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -19,7 +19,7 @@ void print_run_help() {
   std::printf(
       "usage: centrec run CASE.yaml --out DIR [--cache DIR] [--speed-rpm N] [--mass-flow KG_S]\n"
       "                  [--threads N] [--no-plots]\n\n"
-      "The coupled run (DESIGN.md section 1): the DEM of the case's `dem:` drum (derived from\n"
+      "The coupled run (docs/architecture.md): the DEM of the case's `dem:` drum (derived from\n"
       "`receiver:` by eqs 1-3 when receiver.dem_diameter_d is given), its averaged film fields\n"
       "mapped onto the thermal film (tangential average, mass flux conserved), scaled up to the\n"
       "receiver when the case has one, then the thermal model of `thermal:`.\n"

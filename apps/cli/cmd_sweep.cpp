@@ -1,4 +1,4 @@
-// `centrec sweep CASE.yaml --out DIR`: the operating map (issue 5 item 4). Runs `centrec
+// `centrec sweep CASE.yaml --out DIR`: the operating map. Runs `centrec
 // run` over the case's sweep grid (speed x mass flow) as parallel processes, then tabulates
 // outlet temperature, efficiency and k_eff (DIR/sweep.csv, DIR/sweep.json) and charts them
 // (apps/plot_sweep.py).

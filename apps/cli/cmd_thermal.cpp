@@ -16,10 +16,10 @@ int cmd_thermal(const Args& args) {
     std::printf(
         "usage: centrec thermal CASE.yaml --out DIR\n\n"
         "Solves the energy equation of the particle film under concentrated solar flux\n"
-        "(DESIGN.md section 9): the steady state of the operating point (2D on z x xi = eta/t,\n"
+        "(docs/thermal_model.md): the steady state of the operating point (2D on z x xi = eta/t,\n"
         "or the 1D depth-lumped model), then the transient if the case has `thermal.transient`\n"
         "(flux step, cloud passage, mass-flow change). The film comes from `film.analytic` or\n"
-        "from a film-field HDF5 file `film.file` (group /film, DESIGN.md section 10).\n\n"
+        "from a film-field HDF5 file `film.file` (group /film, docs/coupling.md).\n\n"
         "Writes DIR/thermal.h5 (T, k fields, local fluxes, k_eff per section, transient\n"
         "series; units as attributes; the resolved configuration and the code version as root\n"
         "attributes) and DIR/summary.json (outlet mixing-cup temperature, efficiency, powers,\n"

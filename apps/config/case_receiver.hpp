@@ -1,5 +1,5 @@
 #pragma once
-// The `receiver:` section of a coupled case (issue 5 item 2): the actual (full-size)
+// The `receiver:` section of a coupled case: the actual (full-size)
 // receiver's operating point. The coupled run simulates a scaled-down drum (the `dem:`
 // section, or one derived from this section by eqs 1-3 when `dem_diameter_d` is given)
 // and scales the film back up to this receiver.

@@ -1,5 +1,5 @@
 #pragma once
-// The `sweep:` section of a coupled case (issue 5 item 4): the operating window of
+// The `sweep:` section of a coupled case: the operating window of
 // `centrec sweep`, rotational speed x mass flow of the receiver (or of the DEM drum when the
 // case has no receiver), and how many coupled runs go in parallel.
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// The thermal case: YAML -> typed thermal config structs (DESIGN.md sections 2, 9). Top-level
+// The thermal case: YAML -> typed thermal config structs (docs/architecture.md and docs/thermal_model.md). Top-level
 // keys `title`, `film` ({analytic: ...} or {file: ..., group: ...}) and `thermal`. Every key
 // is checked for type and range by the strict reader; relations between keys (thickness
 // above one particle diameter, ...) are refused with the key path and line.

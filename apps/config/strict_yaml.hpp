@@ -1,5 +1,5 @@
 #pragma once
-// Strict YAML reading at the edge of the program (DESIGN.md section 2):
+// Strict YAML reading at the edge of the program (docs/architecture.md):
 // every key read is checked for type and range, every key not read is an error,
 // and every value actually used (given or defaulted) is recorded into a
 // "resolved" tree that outputs echo.

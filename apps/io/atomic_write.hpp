@@ -1,6 +1,6 @@
 #pragma once
 // Outputs are written to a temporary name and renamed into place, so a killed run
-// never leaves a half-written file under the final name (DESIGN.md section 7).
+// never leaves a half-written file under the final name (docs/outputs.md).
 #include <string>
 
 namespace centrec::io {

@@ -1,5 +1,5 @@
 #pragma once
-// DIR/checkpoint.h5 of `centrec dem` (DESIGN.md section 7): the resolved case, the run's
+// DIR/checkpoint.h5 of `centrec dem` (docs/outputs.md): the resolved case, the run's
 // phase and the scene's full state (dem/scene/centrec_scene.hpp SceneState), written
 // atomically through apps/io/h5_file (tmp + rename). Every dataset and attribute enters a
 // checksum stored in the file, so a damaged checkpoint is refused instead of resumed.

@@ -1,5 +1,5 @@
 #pragma once
-// DIR/dem.h5 of a DEM run (DESIGN.md section 7) and its XDMF sidecar DIR/dem.xmf so
+// DIR/dem.h5 of a DEM run (docs/outputs.md) and its XDMF sidecar DIR/dem.xmf so
 // ParaView opens the particle snapshots. Units are attributes of every dataset.
 //
 // Layout:

@@ -5,7 +5,7 @@
 namespace centrec::io {
 
 namespace {
-// The case metadata of DESIGN.md section 10, as group attributes with their units.
+// The case metadata of docs/coupling.md, as group attributes with their units.
 struct Meta {
   const char* name;
   const char* units;

@@ -1,5 +1,5 @@
 #pragma once
-// The film field (DESIGN.md section 10) in HDF5: group (default /film) with datasets z, eta,
+// The film field (docs/coupling.md) in HDF5: group (default /film) with datasets z, eta,
 // t (1D) and u, phi, D and optional u_std, phi_std, D_std ([nz, neta]), units as
 // attributes, and the case metadata as number/string attributes of the group.
 #include <string>

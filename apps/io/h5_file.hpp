@@ -1,5 +1,5 @@
 #pragma once
-// A small RAII HDF5 file over the C API (DESIGN.md section 7): groups, double datasets
+// A small RAII HDF5 file over the C API (docs/outputs.md): groups, double datasets
 // (1D/2D) with a `units` attribute, string and number attributes. Writing goes to
 // "<path>.tmp" and commit() renames it onto <path>, so a failed run never leaves a
 // half-written file under the final name. Paths are absolute inside the file ("/a/b").

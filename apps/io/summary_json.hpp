@@ -1,5 +1,5 @@
 #pragma once
-// Writes a summary.json atomically (temporary name, then rename; DESIGN.md section 7).
+// Writes a summary.json atomically (temporary name, then rename; docs/outputs.md).
 #include <nlohmann/json.hpp>
 #include <string>
 

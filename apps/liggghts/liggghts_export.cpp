@@ -187,7 +187,7 @@ std::string feeder_commands(const SceneConfig& c, const LiggghtsDeckPlan& plan, 
   const double speed = c.drum.omega * 0.5 * c.drum.diameter;  // the wall's linear speed, signed with the spin
   const int parts = feeder_parts(arc);
   std::ostringstream s;
-  s << "\n# --- Feeder (DESIGN.md section 4): an annular sector centred radial_offset inside the wall,\n"
+  s << "\n# --- Feeder (docs/centrec_scene.md): an annular sector centred radial_offset inside the wall,\n"
        "# r in [rc - h/2, rc + h/2], theta within arc_width/(2 rc) of the feeder angle, z in\n"
        "# [axial_start, axial_start + axial_length]; particles enter at the mass flow rate with the\n"
        "# wall's tangential speed omega R and no axial velocity. One LIGGGHTS insertion gives all\n"
@@ -235,7 +235,7 @@ std::string deck(const config::CaseFile& cf, const config::DemCase& dc, const Li
   std::ostringstream s;
   s << "# LIGGGHTS 3.8 deck for the centrec case " << cf.path << " (" << cf.title << "),\n"
     << "# written by `centrec export-liggghts` (centrec " << centrec::io::code_version() << "). SI units.\n"
-    << "# Frame (DESIGN.md section 4): drum axis +z from the back plate (z = 0) to the outlet\n"
+    << "# Frame (docs/centrec_scene.md): drum axis +z from the back plate (z = 0) to the outlet\n"
     << "# (z = L); gravity g (0, -cos tilt, sin tilt); the drum spins at omega about +z.\n"
     << fmt("# D = %.9g m, L = %.9g m, omega = %.9g rad/s, d = %.9g m, dt = %.9g s, %s mode.\n", c.drum.diameter,
            slice ? c.slice.length : c.drum.length, W, d, plan.dt, slice ? "periodic-slice" : "drum")
@@ -252,7 +252,7 @@ std::string deck(const config::CaseFile& cf, const config::DemCase& dc, const Li
     << fmt("neighbor %.9g bin\nneigh_modify delay 0\n", c.skin > 0.0 ? c.skin : 0.2 * d);
 
   s << "\n# --- Materials and contact law: type 1 particles (free and glued), type 2 the drum mesh.\n"
-       "# Hertz normal, Mindlin tangential with history, EPSD2 rolling friction (DESIGN.md section 3).\n"
+       "# Hertz normal, Mindlin tangential with history, EPSD2 rolling friction (docs/dem_physics.md).\n"
        "# LIGGGHTS' rolling model sees a particle's absolute angular velocity at a wall contact,\n"
        "# the case's `wall_rolling_model: liggghts`.\n";
   LiggghtsMaterials m;

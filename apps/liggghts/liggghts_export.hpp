@@ -1,6 +1,6 @@
 #pragma once
 // `centrec export-liggghts`: a complete, commented LIGGGHTS 3.8 deck for a DEM case
-// (DESIGN.md section 8): the data file (rough-wall glued spheres and the starting film,
+// (docs/architecture.md): the data file (rough-wall glued spheres and the starting film,
 // exactly as the native scene builds them), the drum STL (cylinder, back plate, outlet
 // lip) and the outlet counting face written from the analytic geometry, and in.centrec.
 // Settings LIGGGHTS cannot express are refused by name.

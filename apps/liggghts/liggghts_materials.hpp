@@ -2,7 +2,7 @@
 // The LIGGGHTS 3.8 material and contact-law commands shared by the exported deck and
 // the benchmark deck: two atom types (1 = particles, 2 = walls), per-type E and nu,
 // per-type-pair e, mu and mu_r, Hertz + tangential history + EPSD2 rolling friction
-// (the native engine's law, DESIGN.md section 3).
+// (the native engine's law, docs/dem_physics.md).
 #include <string>
 
 namespace centrec::liggghts {

@@ -1,5 +1,5 @@
 #pragma once
-// Outputs of `centrec run` (issue 5 item 3): DIR/results.h5 (the thermal groups of
+// Outputs of `centrec run`: DIR/results.h5 (the thermal groups of
 // thermal.h5, the coupled film /film, and /coupling: mapping and scaling records),
 // DIR/film.h5 (the film field alone, reusable as `film: {file: DIR/film.h5}`) and
 // DIR/summary.json (outlet temperature, efficiency, k_eff and its parts, film thickness,

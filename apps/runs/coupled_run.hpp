@@ -1,5 +1,5 @@
 #pragma once
-// The coupled run behind `centrec run` (issue 5 item 3, DESIGN.md section 1):
+// The coupled run behind `centrec run` (docs/architecture.md):
 // DEM of the scaled-down drum -> its averaged film (coupling/dem_film_from_run, in memory;
 // read back from dem.h5 when the DEM comes from the cache) ->
 // tangentially averaged film field (coupling/film_mapping) -> scale-up to the receiver

@@ -1,5 +1,5 @@
 #pragma once
-// The DEM cache of `centrec run` (issue 5 item 3): a DEM run's outputs are stored under
+// The DEM cache of `centrec run`: a DEM run's outputs are stored under
 // CACHE/<key>/, the key a hash of every DEM input (the resolved `dem:` configuration, the
 // drum and feed the receiver derived, and the code version), so a run whose DEM inputs are
 // unchanged (a thermal-only change) reuses them and reruns in seconds.

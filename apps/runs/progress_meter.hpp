@@ -1,5 +1,5 @@
 #pragma once
-// Progress of a long run (DESIGN.md section 7): percent, simulated time, turns, ETA and
+// Progress of a long run (docs/outputs.md): percent, simulated time, turns, ETA and
 // particle-steps/s; an updating line on a terminal, plain log lines otherwise.
 #include <chrono>
 #include <cstdint>

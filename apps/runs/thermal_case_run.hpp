@@ -1,6 +1,6 @@
 #pragma once
 // Runs a thermal case: the steady state of the initial operating point, then the transient
-// if the case has one (DESIGN.md section 9). Shared by `centrec thermal` and the tests.
+// if the case has one (docs/thermal_model.md). Shared by `centrec thermal` and the tests.
 #include <memory>
 #include <vector>
 

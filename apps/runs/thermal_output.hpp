@@ -1,5 +1,5 @@
 #pragma once
-// Outputs of `centrec thermal` (DESIGN.md sections 7, 9): DIR/thermal.h5 (fields with units
+// Outputs of `centrec thermal` (docs/outputs.md and docs/thermal_model.md): DIR/thermal.h5 (fields with units
 // attributes, the resolved configuration and the code version as root attributes) and the
 // headline figures as JSON for DIR/summary.json.
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // Wall-normal self-diffusion (dispersion) coefficient vs wall distance: the mixing part
-// of the film's effective conductivity (DESIGN.md sections 5, 9).
+// of the film's effective conductivity (docs/film_sampling.md and docs/thermal_model.md).
 //
 // Estimator. Take pairs of snapshots a lag tau apart; follow each particle by id; its
 // radial displacement dr = r(t + tau) - r(t) goes to the bin of its STARTING wall

@@ -1,11 +1,11 @@
 #pragma once
 // Where a particle sits in the drum cross-section: its wall distance and its angle theta.
 //
-// Theta convention (DESIGN.md section 5; paper Figs 1b, 4, 5). The paper draws the drum
+// Theta convention (docs/film_sampling.md; paper Figs 1b, 4, 5). The paper draws the drum
 // rotating clockwise and measures its sections at 45, 90 and 135 deg counter-clockwise,
 // i.e. AGAINST the rotation, and places all three in the moving zone. The moving zone
 // is around the top of the cross-section, where the wall-normal load omega^2 R - g cos(beta)
-// is smallest (DESIGN.md section 4), so here:
+// is smallest (docs/centrec_scene.md), so here:
 //
 //   theta increases against the drum's rotation, and
 //   theta = theta_of_top (default 90 deg) at the "top": the direction opposite to the

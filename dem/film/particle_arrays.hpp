@@ -2,7 +2,7 @@
 // A read-only, structure-of-arrays view of one particle snapshot in the drum frame,
 // so the DEM engine can hand its own arrays to the film samplers without copies.
 //
-// Drum frame (DESIGN.md section 4): drum axis = z, inlet (back plate) at z = 0,
+// Drum frame (docs/centrec_scene.md): drum axis = z, inlet (back plate) at z = 0,
 // outlet at z = L, wall at sqrt(x^2 + y^2) = R. SI units throughout.
 #include <cstddef>
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// The CentRec scene (DESIGN.md section 4): builds the engine's walls, rough wall and
+// The CentRec scene (docs/centrec_scene.md): builds the engine's walls, rough wall and
 // starting film from a SceneConfig, then advances it in batches, feeding particles at
 // the inlet and removing those past the outlet, and logs the mass flows.
 #include <cmath>

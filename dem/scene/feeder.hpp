@@ -1,5 +1,5 @@
 #pragma once
-// The feeder (DESIGN.md section 4, paper Fig. 1): particles enter from a region whose
+// The feeder (docs/centrec_scene.md, paper Fig. 1): particles enter from a region whose
 // centre lies a radial offset inside the wall near the inlet, with the wall's tangential
 // speed omega R and no axial velocity, at a mass flow rate; never overlapping.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Configuration of the CentRec scene (DESIGN.md section 4): the tilted rotating drum,
+// Configuration of the CentRec scene (docs/centrec_scene.md): the tilted rotating drum,
 // its retention hardware (outlet lip, rough wall), the feeder, the outlet and the
 // periodic-slice mode.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Runs the paper's film samplers (dem/film, DESIGN.md section 5) on a CentRec scene:
+// Runs the paper's film samplers (dem/film, docs/film_sampling.md) on a CentRec scene:
 // snapshots several times per turn, a period per turn, then reduces everything to the
 // averaged film fields with their standard deviations over turns.
 #include <memory>

@@ -1,5 +1,5 @@
 #pragma once
-// Holdup controller of the periodic slice (DESIGN.md section 4): the slice's axial mass
+// Holdup controller of the periodic slice (docs/centrec_scene.md): the slice's axial mass
 // flow mdot = sum(m_i v_z,i) / Ls (the flux through any cross-section, averaged over the
 // period) is measured over a window of turns; at the window's end the holdup changes by
 //   dN = gain x ln(target / mdot) x N,   |dN| <= max_step x N,

@@ -1,5 +1,5 @@
 #pragma once
-// Positions of the glued rough-wall monolayer (DESIGN.md section 4): spheres touching
+// Positions of the glued rough-wall monolayer (docs/centrec_scene.md): spheres touching
 // the drum wall on a square or hexagonal lattice in (arc length, z).
 #include <vector>
 

@@ -12,7 +12,7 @@ namespace {
 
 const char* kHelp =
     "centrec_bench_film: DEM speed of centrec vs LIGGGHTS 3.8 on a settled particle film in the\n"
-    "D12 drum (issue 2 item 5). Both engines start from the same lattice file, settle, then run\n"
+    "D12 drum. Both engines start from the same lattice file, settle, then run\n"
     "timed phases; the median phase gives particle-steps/s.\n\n"
     "  --sizes N,N,..       target particle counts (default 10000,50000,200000)\n"
     "  --threads T,T,..     centrec OpenMP threads = LIGGGHTS MPI ranks (default 1,2)\n"

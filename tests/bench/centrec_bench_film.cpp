@@ -1,4 +1,4 @@
-// centrec_bench_film: issue 2 item 5. Times centrec and LIGGGHTS 3.8 on the same settled
+// centrec_bench_film: Times centrec and LIGGGHTS 3.8 on the same settled
 // particle film in the D12 drum at several N and thread/rank counts; see --help.
 #include <algorithm>
 #include <cmath>

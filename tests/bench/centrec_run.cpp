@@ -41,8 +41,7 @@ dem::SimulationConfig make_config(const FilmCase& c, const FilmState& s, const C
   cfg.z_lo = 0.0;
   cfg.z_hi = s.length;
   cfg.drum = {{0, 0, 0}, {0, 0, 1}, c.omega()};
-  // LIGGGHTS' mesh walls give the rolling model the particle's absolute spin (DESIGN.md
-  // section 3): use the same form so both engines compute the same torques.
+  // LIGGGHTS' mesh walls give the rolling model the particle's absolute spin (docs/dem_physics.md): use the same form so both engines compute the same torques.
   cfg.wall_rolling = dem::WallRolling::liggghts;
   cfg.threads = r.threads;
   return cfg;

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Cross-check of the two DEM engines (issue 9 item 3): reads two `centrec dem` output
+"""Cross-check of the two DEM engines: reads two `centrec dem` output
 directories of the same case (native and --engine liggghts) and writes a Markdown table
 and a PNG: holdup, inlet/outlet mass flow, eqs 4-7 film thickness (whole film and along z)
 and the nine axial-velocity profiles (paper Fig 6), each with its spread over the sampled

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Engine scaling (issue 9 item 4): one case on centrec at 1 and 2 threads and on
+"""Engine scaling: one case on centrec at 1 and 2 threads and on
 LIGGGHTS 3.8 at 1 and 2 ranks, back to back in one run, so all four see the same machine
 load. Prints and writes a Markdown table (wall time, particle-steps/s, LIGGGHTS' own loop
 time) and the machine load average before and after each run.

@@ -1,5 +1,5 @@
 #pragma once
-// The benchmark case (issue 2 item 5): the paper's particles (source-paper Table 1) as a
+// The benchmark case: the paper's particles (source-paper Table 1) as a
 // dense film on the inside of the D12 drum, axially periodic, gravity tilted 45 deg from
 // the drum axis. One struct so both engines are fed from the same numbers.
 #include <cmath>

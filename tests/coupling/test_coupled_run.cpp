@@ -1,4 +1,4 @@
-// End-to-end coupled run (issue 5 item 6): tests/coupling/small_coupled.yaml (the D12
+// End-to-end coupled run: tests/coupling/small_coupled.yaml (the D12
 // receiver, its DEM drum derived by eqs 1-3 at D/d = 21, a short DEM, scaled back up) gives
 // the stored outlet temperature within 1 K; a rerun takes the cached DEM and gives an
 // identical result; a thermal-only change reuses the DEM; the outputs carry the film and the

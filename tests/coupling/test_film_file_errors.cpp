@@ -1,5 +1,5 @@
 // A corrupted or mismatched film-field file gives a clear error naming the file and what is
-// wrong (issue 5 item 6), both when read directly and through a case's `film.file`.
+// wrong, both when read directly and through a case's `film.file`.
 #include <gtest/gtest.h>
 
 #include "tests/test_case_dir.hpp"

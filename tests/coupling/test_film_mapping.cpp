@@ -1,4 +1,4 @@
-// Mapping DEM averages onto the thermal film (issue 5 items 1, 2, 6): the mapped film
+// Mapping DEM averages onto the thermal film: the mapped film
 // carries the DEM's mass flow (independent quadrature and the thermal grid, 1 %), the
 // tangential average weights the zones, empty bins are filled, the glued wall layer is
 // added back with its exact volume, and the scaled-up film equals the scaled-down one in

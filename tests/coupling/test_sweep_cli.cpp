@@ -1,4 +1,4 @@
-// `centrec sweep` (issue 5 item 4): the small coupled case over 1 speed x 2 mass flows as two
+// `centrec sweep`: the small coupled case over 1 speed x 2 mass flows as two
 // parallel `centrec run` processes; the table has one row per point with its outlet
 // temperature and k_eff, the points differ, and a sweep of a case without a DEM is refused.
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 // mu times the normal one, J_n = m (1+e) v_n, so
 //   v_t' = v_t - mu (1+e) v_n,   omega' R = (5/2) mu (1+e) v_n   (I = 2/5 m R^2).
 // The contact slides throughout when v_t / v_n > (7/2) mu (1+e) (else it ends rolling).
-// The law caps |Ft| at mu |Fn| (DESIGN.md 3, as LIGGGHTS): while the dashpot makes Fn
+// The law caps |Ft| at mu |Fn| (docs/dem_physics.md, as LIGGGHTS): while the dashpot makes Fn
 // tensile near separation, |Fn| still feeds friction, so the tangential impulse is
 // mu * integral |Fn| dt, which exceeds mu m (1+e) v_n for strongly damped contacts. The
 // test checks both: the impulse against mu * integral|Fn| (the law itself) at e = 0.9, and

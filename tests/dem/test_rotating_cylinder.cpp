@@ -1,7 +1,7 @@
 // (f) Particles in a cylinder rotating at 160 rpm (D = 0.12 m) with wall friction 10000
 // reach rigid co-rotation: v = Omega x r and spin = Omega (default, relative wall rolling).
 // With the LIGGGHTS-compatible switch the EPSD2 wall spring sees the absolute spin, so the
-// spurious torque (DESIGN.md section 3) brakes the particles' spin towards zero while the
+// spurious torque (docs/dem_physics.md) brakes the particles' spin towards zero while the
 // wall still carries them round: they co-rotate in position but do not spin with the drum.
 #include <gtest/gtest.h>
 

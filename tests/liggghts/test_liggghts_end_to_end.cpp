@@ -1,4 +1,4 @@
-// A tiny case through LIGGGHTS (issue 9 item 5): `centrec dem --engine liggghts` exports,
+// A tiny case through LIGGGHTS: `centrec dem --engine liggghts` exports,
 // runs mpirun -np 1 liggghts and reads the dumps back. The imported holdup (free
 // particles) must equal the atom count LIGGGHTS' log reports minus the glued layer, and
 // the last dump must hold the same particles. Skipped if LIGGGHTS is not installed

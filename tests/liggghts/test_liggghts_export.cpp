@@ -1,4 +1,4 @@
-// The LIGGGHTS export (issue 9 items 1 and 5): a golden deck for a small case, so any
+// The LIGGGHTS export: a golden deck for a small case, so any
 // change to the export is a visible diff, the files it writes, and the refusal of
 // settings LIGGGHTS cannot express.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Reading LIGGGHTS results back (issue 9 items 2 and 5): a dump file the test writes
+// Reading LIGGGHTS results back: a dump file the test writes
 // (columns in LIGGGHTS' order and shuffled, with an extra column), a truncated dump, the
 // dump file naming, and the mass-flow record with its mass balance.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-"""The retention study's drum and its settings (issue 7): one drum scaled from the paper's
+"""The retention study's drum and its settings: one drum scaled from the paper's
 D12 by eqs 1-3 (`centrec scale`), the same for every setting, pre-filled with the paper's
 scaled holdup, and the settings that differ only in the retention hardware, the size
 spread and the wall rolling model.
@@ -109,7 +109,7 @@ SETTINGS = [
     ("lip3_liggghts", "rolling", "lip 3 d, LIGGGHTS wall rolling", _merge(_lip(3), _LIGGGHTS)),
     # Second round, between the first round's neighbours: square 1.0 d holds ~0.76 of the
     # paper's film steadily, square 1.3 d over-holds and locks two layers; a size spread
-    # is the suspect for the locking (DESIGN.md section 4).
+    # is the suspect for the locking (docs/centrec_scene.md).
     ("rough_sq1.15", "combined", "rough square 1.15 d", _rough("square", 1.15)),
     ("rough_sq1.3_spread10", "combined", "rough square 1.3 d, sizes +-10 %",
      _merge(_rough("square", 1.3), _spread(0.10))),

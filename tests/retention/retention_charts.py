@@ -1,4 +1,4 @@
-"""Charts of the retention study (issue 7), PNGs under docs/retention/:
+"""Charts of the retention study, PNGs under docs/retention/:
 
   holdup_vs_setting.png   held particles / paper's scaled holdup, per setting, with the +-10 % band
   thickness_along_z.png   eqs 4-7 thickness along z/L per setting against the paper's Fig 3 shape

@@ -1,4 +1,4 @@
-"""What the retention study measures in one `centrec dem` run (issue 7): holdup and its
+"""What the retention study measures in one `centrec dem` run: holdup and its
 ratio to the paper's scaled holdup, its drift, outlet mass flow, eqs 4-7 thickness along
 z, the nine u(eta) profiles, solid fraction by zone, the standing-layer height and the
 profile's distance from the paper's line from 1 d.
@@ -11,7 +11,7 @@ import numpy as np
 
 import retention_cases as rc
 
-STANDING_FRACTION = 0.02  # u below 2 % of the surface velocity = standing (issue 7)
+STANDING_FRACTION = 0.02  # u below 2 % of the surface velocity = standing
 Z_POINTS = (0.3, 0.5, 0.7, 0.95)  # z/L where the table reports the thickness
 NO_FILM_RATIO = 0.25  # below this share of the paper's holdup there is no film to measure
 

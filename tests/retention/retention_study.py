@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The retention study (issue 7): which retention setting reproduces the paper's film.
+"""The retention study: which retention setting reproduces the paper's film.
 
 usage (from the repository root, after ./setup.sh):
   /usr/bin/python3 tests/retention/retention_study.py [--jobs 2] [--only NAME,...]
@@ -44,7 +44,7 @@ def write_cases(drum, case_dir, settings):
     paths = {}
     for name, _group, label, overrides in settings:
         dem = rc.setting_dem(drum, overrides)
-        comment = (f"Retention study (issue 7, tests/retention/retention_study.py writes this file): {label}.\n"
+        comment = (f"Retention study (tests/retention/retention_study.py writes this file): {label}.\n"
                    f"D12 scaled to D/d = {rc.D_OVER_D} by eqs 1-3; pre-filled so free + glued particles hold the\n"
                    f"paper's film ({drum['thickness_d']:.2f} d at f_s 0.5 = {drum['particles']:.0f} particles here), "
                    f"settled {rc.SETTLE_S} s,\nthen {rc.SAMPLE_TURNS} turns sampled. "

@@ -1,5 +1,5 @@
 // The feeder inserts at the target mass flow (within 2 %), never overlapping, with the
-// wall's tangential speed and no axial velocity (DESIGN.md section 4).
+// wall's tangential speed and no axial velocity (docs/centrec_scene.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Slow: the README's quickstart drum reaches the cold steady state, i.e. its outlet
-// mass flow converges to the inlet mass flow (issue 3 item 7). Runs the case file itself.
+// mass flow converges to the inlet mass flow. Runs the case file itself.
 #include <gtest/gtest.h>
 
 #include <cmath>

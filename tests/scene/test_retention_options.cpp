@@ -1,4 +1,4 @@
-// The retention study's scene options (issue 7 item 1) in the full drum and in the
+// The retention study's scene options in the full drum and in the
 // periodic slice: size spread (packed start and feeder), rough wall (glued, co-rotating),
 // outlet lip (holds a film below its height; refused in a slice, which has no outlet) and
 // the wall rolling model (reaches the engine in both modes).

@@ -1,4 +1,4 @@
-// Bauxite c_p(T) against the values DESIGN.md section 9 quotes, and the exact
+// Bauxite c_p(T) against the values docs/thermal_model.md quotes, and the exact
 // enthalpy integral against quadrature.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Bed and air conductivity against the values DESIGN.md section 9 expects for 1.2 mm
+// Bed and air conductivity against the values docs/thermal_model.md expects for 1.2 mm
 // bauxite (about 0.2 W/(m K) at 25 C and 0.8 at 1000 C for phi ~ 0.5-0.6), and the
 // limits the ZBS model must respect.
 #include <gtest/gtest.h>

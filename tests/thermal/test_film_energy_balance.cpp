@@ -1,4 +1,4 @@
-// Conservation: the steady energy balance closes to 1e-8 of the absorbed power (issue 4),
+// Conservation: the steady energy balance closes to 1e-8 of the absorbed power,
 // and plug flow under uniform flux without losses reproduces the exact enthalpy balance
 // with c_p(T) integrated.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Manufactured solution T = T0 + A sin(pi z / 2L) cos(pi eta / t) with constant properties:
 // the source term makes it exact, and grid refinement (nz and nxi doubled together) shows
-// the observed order of accuracy (issue 4): 2 for central conduction (resting film),
+// the observed order of accuracy: 2 for central conduction (resting film),
 // 1 for upwind advection, 2 for van Leer MUSCL advection on this smooth solution.
 #include <gtest/gtest.h>
 

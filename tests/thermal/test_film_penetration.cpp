@@ -2,7 +2,7 @@
 // behaves like a semi-infinite body heated for the contact time z / u_surface:
 //   T_s - T_in = 2 alpha q / k sqrt(a tau / pi),  a = k / (rho_s phi c_p)
 // Further down, the heat reaches the slower layers and the finite depth, and the surface
-// departs from it (issue 4).
+// departs from it.
 #include <gtest/gtest.h>
 
 #include <cmath>

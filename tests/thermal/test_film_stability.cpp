@@ -1,4 +1,4 @@
-// Where methods fail (issue 4): a cell Peclet number of 1e4 with a flux that jumps along
+// Where methods fail: a cell Peclet number of 1e4 with a flux that jumps along
 // the film stays within the physical bounds; a radiation-dominated 1000 C film converges
 // both by Newton and by marching.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Transients with the same integrator (issue 4): a 10x flux step, a passing cloud and a
+// Transients with the same integrator: a 10x flux step, a passing cloud and a
 // halving of the mass flow integrate without solver failure and settle on the steady state
 // of the new operating point. Impossible settings give clear errors, not crashes.
 #include <gtest/gtest.h>

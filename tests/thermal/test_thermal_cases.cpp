@@ -1,4 +1,4 @@
-// Golden thermal cases (issue 4): cases/thermal_*.yaml reproduce their stored outlet
+// Golden thermal cases: cases/thermal_*.yaml reproduce their stored outlet
 // temperatures within 0.1 K. The stored values were recorded when the cases were added; a
 // change beyond 0.1 K means the model or the numerics changed and must be explained.
 #include <gtest/gtest.h>

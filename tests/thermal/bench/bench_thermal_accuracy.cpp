@@ -1,4 +1,4 @@
-// Speed vs accuracy of the thermal film solver (issue 4 item 5, DESIGN.md section 8): the
+// Speed vs accuracy of the thermal film solver (docs/architecture.md): the
 // outlet-temperature error against a very fine reference vs wall time, over grid sizes,
 // steady tolerances, 1D vs 2D and upwind vs van Leer advection, for two operating points:
 // the CentRec film with shear mixing (k_eff ~ 10 W/(m K)) and the same film without mixing

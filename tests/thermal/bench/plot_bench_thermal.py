@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Chart of the thermal solver's speed vs accuracy (issue 4 item 5).
+"""Chart of the thermal solver's speed vs accuracy.
 
 Usage: /usr/bin/python3 plot_bench_thermal.py bench.csv out.png
 Reads the CSV of bench_thermal_accuracy and plots |T_out - T_ref| against wall time, one
