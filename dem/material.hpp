@@ -5,8 +5,8 @@
 namespace centrec::dem {
 
 // A material of one Simulation, as Simulation::add_material returned it. It has no
-// default: every particle and wall names the material it is made of, so none can fall
-// back on a placeholder.
+// default: every particle and wall names the material it is made of; the engine has
+// no built-in material to fall back on.
 struct MaterialId {
   explicit constexpr MaterialId(int i) : index(i) {}
   int index;

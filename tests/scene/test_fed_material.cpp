@@ -37,8 +37,8 @@ SceneConfig odd_materials_drum() {
   c.feeder.axial_start = 2e-3;
   c.feeder.axial_length = 5e-3;
   c.dt = 1e-5;
-  // A wide blow-up margin: the engine's old placeholder material (softer, denser) must
-  // fail these checks on their own terms, not by overlapping too far.
+  // A wide blow-up margin, so that particles of a wrong material (the engine's former
+  // built-in one was softer and denser) fail these checks rather than the overlap limit.
   c.max_impact_speed = 5.0;
   c.threads = 1;
   return c;
