@@ -1,9 +1,10 @@
 #pragma once
 // The DEM's averaged film fields as the coupling reads them (what `centrec dem` writes to
-// dem.h5 /film, docs/film_sampling.md), plus the DEM drum's operating point. Plain data, SI
-// units; wall distances of the profile bins in particle diameters d, as the samplers give
-// them. Made from a DEM run by coupling/dem_film_from_run; a cached run's dem.h5 is read
-// back at the program's edge (apps/io/dem_film_h5).
+// dem.h5 /film, docs/film_sampling.md), plus the DEM drum's operating point and its
+// measured flow. Plain data, SI units; wall distances of the profile bins in particle
+// diameters d, as the samplers give them. Made from a DEM run by coupling/dem_film_from_run;
+// a cached run's dem.h5 is read back at the program's edge (apps/io/dem_film_h5).
+#include <string>
 #include <vector>
 
 namespace centrec::coupling {
@@ -11,25 +12,32 @@ namespace centrec::coupling {
 struct DemFilmAverages {
   // The simulated drum and its measured state.
   double drum_radius = 0.0;        // m
-  double length = 0.0;             // m
+  double length = 0.0;             // m (the drum's, also for a slice)
   double omega = 0.0;              // rad/s
   double particle_diameter = 0.0;  // m
   double particle_density = 0.0;   // kg/m3
-  double mdot = 0.0;               // kg/s, outlet mass flow over the last flow window
+  bool slice = false;              // a periodic slice: one axial section, z-independent
   double sampled_turns = 0.0;
+  // Flow over the last flow window (dem/scene/mass_flow_window.hpp): measured = the outlet
+  // (drum) or the axial flow (slice); target = the feed (drum) or the controller's target.
+  double mdot = 0.0;         // kg/s, measured
+  double mdot_target = 0.0;  // kg/s
+  bool steady = false;
+  std::string steady_text;   // one line, as the DEM run printed it
 
-  // Film thickness per axial section (eqs 4-7, ring average), m.
+  // Film thickness per axial section (eqs 4-7, ring average), m: the paper's thickness,
+  // reported beside the film the thermal model receives.
   std::vector<double> section_z, thickness, thickness_std;
-  // Tangential bins: centre angle (rad), surface axial velocity (m/s), 1 = moving zone.
-  std::vector<double> bin_theta, surface_velocity;
-  std::vector<int> moving_zone_of_bin;
+  // Share of the circumference in the moving zone (surface velocity above the zone
+  // threshold): a diagnostic of the regime (docs/validity_threshold.md).
+  double moving_fraction = 0.0;
   // Wall-distance bins (centres, in d; equal widths) of the profiles below.
   std::vector<double> wall_distance_d;
-  // Axial velocity in the arc sections [arc][bin], m/s; turns[arc][bin] = 0 marks an empty bin.
-  std::vector<double> arc_theta, arc_z_over_length;
-  std::vector<std::vector<double>> u_mean, u_std, u_turns;
-  // Solid fraction per zone [bin]: stationary and moving.
-  std::vector<double> phi_stationary, phi_stationary_std, phi_moving, phi_moving_std;
+  // Full-circumference profiles per axial section ring_z [section][bin]: solid fraction of
+  // the free particles and axial volume flux density phi * u (m/s), with their spread over
+  // turns (dem/film/ring_profile.hpp).
+  std::vector<double> ring_z;
+  std::vector<std::vector<double>> ring_phi, ring_phi_std, ring_flux, ring_flux_std;
   // Solid fraction of the glued wall monolayer per bin (zeros without one): not sampled by
   // the DEM (free particles only), added by the mapping (coupling/glued_layer.hpp).
   std::vector<double> phi_glued;

@@ -1,19 +1,15 @@
 #pragma once
-// DEM averages -> the thermal model's film field (docs/coupling.md).
+// DEM averages -> the thermal model's film field: the film as the DEM measured it
+// (docs/coupling.md "Film as measured").
 //
-// Tangential averaging: the thermal film is the film averaged over one drum turn.
-//  - thickness t(z): the DEM's ring thickness per axial section (already a turn average);
-//  - phi(eta): the stationary- and moving-zone profiles weighted by the share of the
-//    circumference each zone covers;
-//  - u(z, eta): the DEM measures profiles only in the arc sections (moving zone). Their
-//    shape is taken as similar around the drum, scaled by the surface velocity: the
-//    turn average is the arc mean times (circumference-mean surface velocity) / (mean
-//    surface velocity at the arcs). Between the arcs' axial levels u is interpolated
-//    linearly in z and held beyond them;
-//  - D(eta): the DEM's dispersion is already pooled over the whole drum.
-// Bins the DEM left empty (the glued wall layer, above the surface) are filled: u = 0 at
-// the wall side, the last value above; phi and D take the nearest sampled bin.
-// The mass flux is NOT yet matched here: conserve_mass_flow (film_mass_flow.hpp) does it.
+// Per axial section the full-circumference profiles (dem/film/ring_profile.hpp) give the
+// solid fraction phi(eta) (free particles, plus the glued wall layer added back) and the
+// axial volume flux density phi*u(eta); the film's velocity is u = (phi*u) / phi, the
+// mass-weighted mean over the whole circumference, stationary and moving zones together.
+// The thermal film reaches from the wall to the top of the last bin, counted from the wall
+// without a gap, whose solid fraction is at least `phi_cut`: the flowing layer, not the
+// eqs 4-7 thickness (reported beside it). Nothing is rescaled here: the flow the film
+// carries is checked against the DEM's measured flow by film_mass_flow.hpp.
 #include <vector>
 
 #include "coupling/dem_film_averages.hpp"
@@ -21,23 +17,22 @@
 
 namespace centrec::coupling {
 
-struct TangentialAverage {
-  double moving_fraction = 0.0;   // share of the circumference in the moving zone
-  double velocity_factor = 0.0;   // circumference-mean surface velocity / mean at the arcs
-  std::vector<double> profile_z;  // axial levels (m) of the arc profiles
-  int filled_bins = 0;            // wall-distance bins that took a neighbour's value
-  // Per axial level: the DEM profile's own mass flux over all its bins (surface particles
-  // above t included), sum of 2 pi rho_s phi u (R - eta) d eta, over the DEM's outlet mdot.
-  // Near 1 when the sampled profiles and the measured flow agree (steady, well sampled).
-  std::vector<double> profile_flux_over_mdot;
+// The solid fraction below which the DEM's top bins are the loose particles above the
+// film, not film (docs/coupling.md "Film as measured": what the cut leaves out is reported).
+constexpr double kFilmSolidFractionCut = 0.1;
+
+struct FilmCut {
+  double phi_cut = 0.0;
+  std::vector<double> thickness;          // m, per section: where the film ends
+  std::vector<double> flow_within_share;  // per section: the film's bin flow / all bins' flow
 };
 
 struct MappedFilm {
   thermal::FilmField film;  // DEM drum size; drum_diameter = 2 R of the DEM drum
-  TangentialAverage tangential;
+  FilmCut cut;
 };
 
-// Throws std::invalid_argument naming the problem (empty film, no moving zone, ...).
-MappedFilm map_dem_film(const DemFilmAverages& a);
+// Throws std::invalid_argument naming the problem (empty film, no flow, ...).
+MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut = kFilmSolidFractionCut);
 
 }  // namespace centrec::coupling

@@ -39,37 +39,40 @@ double planar_mass_flow(const thermal::FilmField& f, std::size_t i, double rho_s
   return M_PI * f.drum_diameter * rho_s * phi_u_integral(f, i);
 }
 
-MassFlowConservation conserve_mass_flow(thermal::FilmField& f, double rho_s, double mdot) {
-  if (!(mdot > 0.0)) throw std::invalid_argument("conserve_mass_flow: mdot must be > 0");
-  MassFlowConservation c;
+FlowClosure flow_closure(const thermal::FilmField& f, double rho_s, double measured_mdot) {
+  if (!(measured_mdot > 0.0)) throw std::invalid_argument("flow closure: the measured mass flow must be > 0");
+  FlowClosure c;
+  c.measured_mdot = measured_mdot;
+  const double R = 0.5 * f.drum_diameter;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < f.nz(); ++i) {
+    const double r = cylindrical_mass_flow(f, i, rho_s, R) / measured_mdot;
+    c.section_over_measured.push_back(r);
+    c.worst_error = std::max(c.worst_error, std::abs(r - 1.0));
+    sum += r;
+  }
+  c.mean_over_measured = sum / static_cast<double>(f.nz());
+  return c;
+}
+
+ImposedFlow impose_mass_flow(thermal::FilmField& f, double rho_s, double mdot) {
+  if (!(mdot > 0.0)) throw std::invalid_argument("impose_mass_flow: mdot must be > 0");
+  ImposedFlow c;
   c.drum_radius = 0.5 * f.drum_diameter;
   c.mdot = mdot;
-  double p_sum = 0.0, q_sum = 0.0;
-  for (std::size_t i = 0; i < f.nz(); ++i) {
-    const double p = phi_u_integral(f, i);
-    if (!(p > 0.0))
-      throw std::invalid_argument("conserve_mass_flow: section " + std::to_string(i) + " (z = " +
+  for (std::size_t i = 0; i < f.nz(); ++i)
+    if (!(cylindrical_mass_flow(f, i, rho_s, c.drum_radius) > 0.0))
+      throw std::invalid_argument("impose_mass_flow: section " + std::to_string(i) + " (z = " +
                                   std::to_string(f.z[i]) + " m) carries no mass flux");
-    p_sum += p;
-    q_sum += phi_u_eta_integral(f, i);
-    c.sampled_over_mdot.push_back(cylindrical_mass_flow(f, i, rho_s, c.drum_radius) / mdot);
-  }
-  c.mean_flux_depth = q_sum / p_sum;
-  // Every section carries mdot by the cylindrical formula; the planar film's perimeter is
-  // taken at the inlet section's flux-weighted radius, where the thermal model reads its
-  // total (its grid rescales the other faces to it: mass_flux_max_correction).
-  const double inlet_depth = phi_u_eta_integral(f, 0) / phi_u_integral(f, 0);
-  c.planar_diameter = 2.0 * (c.drum_radius - inlet_depth);
-  const std::size_t n = f.neta();
-  for (std::size_t i = 0; i < f.nz(); ++i) {
-    const double scale = mdot / cylindrical_mass_flow(f, i, rho_s, c.drum_radius);
-    for (std::size_t j = 0; j < n; ++j) {
-      f.u[i * n + j] *= scale;
-      if (!f.u_std.empty()) f.u_std[i * n + j] *= scale;
-    }
-    c.max_cylindrical_error =
-        std::max(c.max_cylindrical_error, std::abs(cylindrical_mass_flow(f, i, rho_s, c.drum_radius) / mdot - 1.0));
-  }
+  // The thermal model reads its total at the inlet section (its grid carries that total
+  // through every face, thermal/film_grid.hpp), so the one factor is set there; how far the
+  // other sections differ is the closure's spread (flow_closure).
+  c.film_mdot = cylindrical_mass_flow(f, 0, rho_s, c.drum_radius);
+  c.factor = mdot / c.film_mdot;
+  c.mean_flux_depth = phi_u_eta_integral(f, 0) / phi_u_integral(f, 0);
+  c.planar_diameter = 2.0 * (c.drum_radius - c.mean_flux_depth);
+  for (double& u : f.u) u *= c.factor;
+  for (double& u : f.u_std) u *= c.factor;
   f.drum_diameter = c.planar_diameter;
   f.mdot = mdot;
   return c;

@@ -1,6 +1,7 @@
 #include "scaling_laws.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace centrec::coupling {
@@ -39,5 +40,16 @@ double scale_particle_count(double n_actual, double actual_diameter, double targ
 
 double rpm_to_rad_per_s(double rpm) { return rpm * 2.0 * M_PI / 60.0; }
 double rad_per_s_to_rpm(double omega) { return omega * 60.0 / (2.0 * M_PI); }
+
+std::string scale_down_validity(double drum_diameter, double particle_diameter) {
+  const double dd = drum_diameter / particle_diameter;
+  if (dd >= kMinimumDrumDiameterOverD) return "";
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the DEM drum is D/d = %.4g, below the scale-down laws' validity threshold D/d = %.0f measured in "
+                "docs/validity_threshold.md (smaller drums are another regime: the film slides all round and thickens)",
+                dd, kMinimumDrumDiameterOverD);
+  return text;
+}
 
 }  // namespace centrec::coupling

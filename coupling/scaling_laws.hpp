@@ -1,5 +1,6 @@
 #pragma once
 // Scale-down laws of the paper, eqs. (1)-(3): keep omega^2 r, mdot/r and L/r.
+#include <string>
 
 namespace centrec::coupling {
 
@@ -26,6 +27,13 @@ double film_particle_count(const ReceiverOperatingPoint& op, double film_thickne
 // Holdup carried to another size: the film (thickness in d) is the same, the wall area
 // scales with D L, i.e. with (r_sim / r_act)^2 by eq (3): N_sim = N_act (r_sim / r_act)^2.
 double scale_particle_count(double n_actual, double actual_diameter, double target_diameter);
+
+// The laws hold while D >> d: below this drum diameter over particle diameter the film is
+// another regime (the whole circumference slides, the film thickens), measured in
+// docs/validity_threshold.md. Coupled runs refuse a smaller DEM drum unless told otherwise.
+constexpr double kMinimumDrumDiameterOverD = 60.0;
+// "" when D/d >= the threshold, else the sentence that says why D/d is not valid.
+std::string scale_down_validity(double drum_diameter, double particle_diameter);
 
 double rpm_to_rad_per_s(double rpm);
 double rad_per_s_to_rpm(double omega);

@@ -18,11 +18,18 @@ namespace {
 void print_run_help() {
   std::printf(
       "usage: centrec run CASE.yaml --out DIR [--cache DIR] [--speed-rpm N] [--mass-flow KG_S]\n"
-      "                  [--threads N] [--no-plots]\n\n"
-      "The coupled run (docs/architecture.md): the DEM of the case's `dem:` drum (derived from\n"
-      "`receiver:` by eqs 1-3 when receiver.dem_diameter_d is given), its averaged film fields\n"
-      "mapped onto the thermal film (tangential average, mass flux conserved), scaled up to the\n"
-      "receiver when the case has one, then the thermal model of `thermal:`.\n"
+      "                  [--threads N] [--no-plots] [--allow-small-drum] [--allow-unsteady]\n\n"
+      "The coupled run (docs/architecture.md): the DEM of the case's `dem:` drum or slice\n"
+      "(derived from `receiver:` by eqs 1-3 when receiver.dem_diameter_d is given), run until\n"
+      "its flow is steady; its film as measured (full-circumference profiles per section, cut\n"
+      "where the solid fraction falls below 0.1) handed to the thermal film, its flow checked\n"
+      "against the DEM's measured flow (flux closure, 5 %), scaled up to the receiver when the\n"
+      "case has one, the case's mass flow imposed by one velocity factor, then the thermal\n"
+      "model of `thermal:` (docs/coupling.md).\n"
+      "Refused unless allowed: a DEM drum below D/d = 60, the scale-down laws' validity\n"
+      "threshold (docs/validity_threshold.md; --allow-small-drum), and a DEM film that is not\n"
+      "at steady flow or misses the flux closure (--allow-unsteady); allowed, they are\n"
+      "warnings in the output and in summary.json \"warnings\".\n"
       "The DEM outputs are cached in CACHE/<hash of every DEM input> (default: the parent of\n"
       "DIR + /dem-cache): a thermal-only change reruns in seconds. A case with `film: {file:}`\n"
       "skips the DEM. --speed-rpm and --mass-flow replace the receiver's operating point (or\n"
@@ -31,16 +38,6 @@ void print_run_help() {
       "thickness, mdot, scaling, wall time per stage), DIR/results.h5 (thermal fields, /film,\n"
       "/coupling), DIR/film.h5 (the film field; reusable as `film: {file: DIR/film.h5}`) and\n"
       "the PNGs of apps/plot_run.py (film, velocity, temperature map, k_eff along z).\n");
-}
-
-std::string ratios(const std::vector<double>& v) {
-  std::string out;
-  char b[32];
-  for (double x : v) {
-    std::snprintf(b, sizeof b, "%s%.3f", out.empty() ? "" : "/", x);
-    out += b;
-  }
-  return out;
 }
 
 std::string parent_of(const std::string& dir) {
@@ -67,6 +64,10 @@ int cmd_run(const Args& args) {
   app.add_option("--mass-flow", o.mass_flow);
   app.add_option("--threads", o.threads);
   app.add_flag("--no-plots", no_plots);
+  app.add_flag("--allow-small-drum", o.allow_small_drum,
+               "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
+  app.add_flag("--allow-unsteady", o.allow_unsteady,
+               "use a DEM film that is not at steady flow or misses the flux closure (with a warning)");
   app.read(args);
   const bool plots = !no_plots;
   if (o.cache_dir.empty()) o.cache_dir = parent_of(out_dir) + "/dem-cache";
@@ -81,23 +82,30 @@ int cmd_run(const Args& args) {
   const auto& b = r.result.balance;
   const auto& k = s["k_eff"]["film_mean"];
   std::printf("centrec run %s\n", case_path.c_str());
-  if (r.film_from_dem)
-    std::printf("  DEM %s (%s): D = %.4g m, %.2f rpm, outlet %.4g g/s; film %.2f d thick (%.2f-%.2f d)\n",
-                r.dem_cached ? "from cache" : "run", r.dem_dir.c_str(), r.dem.scene.drum.diameter,
-                coupling::rad_per_s_to_rpm(r.dem.scene.drum.omega), r.averages.mdot * 1e3,
-                s["film"]["mean_thickness_d"].get<double>(), s["film"]["min_thickness_d"].get<double>(),
-                s["film"]["max_thickness_d"].get<double>());
+  if (r.film_from_dem) {
+    const auto& sd = r.dem.scene;
+    std::printf("  DEM %s (%s): %s D = %.4g m (D/d %.0f), %.2f rpm; %s\n", r.dem_cached ? "from cache" : "run",
+                r.dem_dir.c_str(), sd.slice.enabled ? "slice of the drum" : "drum", sd.drum.diameter,
+                sd.drum.diameter / sd.particle.diameter, coupling::rad_per_s_to_rpm(sd.drum.omega),
+                r.averages.steady_text.c_str());
+    std::printf("  film as measured: %.2f d thick where phi >= %.2g (%.1f-%.1f %% of the DEM's flow inside); "
+                "eqs 4-7 thickness %.2f d; moving zone %.0f %% of the circumference\n",
+                s["film"]["mean_thickness_d"].get<double>(), r.cut.phi_cut,
+                100.0 * s["coupling"]["flow_within_film_share_min"].get<double>(),
+                100.0 * *std::max_element(r.cut.flow_within_share.begin(), r.cut.flow_within_share.end()),
+                s["dem"]["summary"].value("mean_film_thickness_d", 0.0), 100.0 * r.averages.moving_fraction);
+    std::printf("  flux closure: the film carries %.1f %% of the measured %.4g g/s (sections %.1f-%.1f %%, tolerance "
+                "5 %%)\n",
+                100.0 * r.closure.mean_over_measured, r.averages.mdot * 1e3,
+                100.0 * s["coupling"]["flow_closure_min"].get<double>(),
+                100.0 * s["coupling"]["flow_closure_max"].get<double>());
+  }
   if (r.has_receiver)
-    std::printf("  scaled up to the receiver D = %.4g m, L = %.4g m, %.2f rpm: z x %.4g, mdot %.4g kg/s\n",
-                r.receiver.op.diameter, r.receiver.op.length, coupling::rad_per_s_to_rpm(r.receiver.op.omega),
-                r.scale.length_ratio, r.conservation.mdot);
+    std::printf("  scaled up to the receiver D = %.4g m, L = %.4g m, %.2f rpm: z x %.4g\n", r.receiver.op.diameter,
+                r.receiver.op.length, coupling::rad_per_s_to_rpm(r.receiver.op.omega), r.scale.length_ratio);
   if (r.film_from_dem)
-    std::printf("  mass flux: DEM profiles (all bins) / DEM outlet %s; within t %.3f-%.3f; imposed %.4g kg/s, "
-                "cylindrical error %.2e\n",
-                ratios(r.tangential.profile_flux_over_mdot).c_str(),
-                s["coupling"]["sampled_flux_over_mdot_min"].get<double>(),
-                s["coupling"]["sampled_flux_over_mdot_max"].get<double>(), r.conservation.mdot,
-                r.conservation.max_cylindrical_error);
+    std::printf("  imposed the case's %.4g kg/s with one velocity factor %.4f\n", r.imposed.mdot, r.imposed.factor);
+  for (const auto& w : r.warnings) std::printf("  WARNING: %s\n", w.c_str());
   std::printf("  outlet temperature %.2f K (%.2f C) from %.2f K, efficiency %.4f, mdot %.4g kg/s\n", b.T_out,
               b.T_out - 273.15, r.thermal.model.T_in, b.efficiency, b.mass_flow);
   runs::print_receiver_report(r.thermal, b);

@@ -109,6 +109,8 @@ DemCase read_dem_case(MapReader root) {
   s.threads = static_cast<int>(run.integer("threads", 0, 0, 1024));
   s.skin = run.number("skin_d", 0.2, Range::closed(0.01, 5.0), "d (Verlet skin)") * d;
   c.run.duration = run.number("duration", 1.0, Range::positive(), "s");
+  c.run.max_extension =
+      run.number("max_extension", c.run.duration, Range::non_negative(), "s (spin-up extended until steady; default: duration)");
   c.run.progress_interval = run.number("progress_interval", 0.0, Range::non_negative(), "s");
   c.run.flow_window_turns = run.number("flow_window_turns", 5.0, Range::positive(), "turns");
   c.run.steady_tolerance = run.number("steady_tolerance", 0.05, Range::open_closed(0.0, 1.0));

@@ -41,13 +41,15 @@ ReceiverCase read_receiver(MapReader r, MapReader dem) {
                                      " is also given: remove one of them");
     if (dem.child("feeder").has("mass_flow"))
       r.fail("dem_diameter_d", "derives the DEM mass flow by eq 2, but dem.feeder.mass_flow is also given");
+    if (dem.child("slice").has("target_mass_flow"))
+      r.fail("dem_diameter_d", "derives the DEM mass flow by eq 2, but dem.slice.target_mass_flow is also given");
   }
   return c;
 }
 
 coupling::ReceiverOperatingPoint dem_operating_point(const DemCase& dem) {
   const auto& d = dem.scene.drum;
-  return {d.diameter, d.length, d.omega, dem.scene.feeder.mass_flow};
+  return {d.diameter, d.length, d.omega, dem::scene::target_mass_flow(dem.scene)};
 }
 
 void apply_receiver(const ReceiverCase& r, DemCase& dem, bool follow_speed_and_flow) {
@@ -62,7 +64,7 @@ void apply_receiver(const ReceiverCase& r, DemCase& dem, bool follow_speed_and_f
     drum.length = sim.length;
     drum.omega = sim.omega;
     drum.tilt = r.tilt;
-    dem.scene.feeder.mass_flow = sim.mass_flow;
+    dem::scene::set_target_mass_flow(dem.scene, sim.mass_flow);
     return;
   }
   if (std::abs(drum.tilt - r.tilt) > 1e-9)
@@ -73,7 +75,7 @@ void apply_receiver(const ReceiverCase& r, DemCase& dem, bool follow_speed_and_f
   // Keep the given drum's size; its speed and feed follow the receiver by eqs 1-2.
   const auto sim = coupling::scale_to_diameter(r.op, drum.diameter);
   drum.omega = sim.omega;
-  dem.scene.feeder.mass_flow = sim.mass_flow;
+  dem::scene::set_target_mass_flow(dem.scene, sim.mass_flow);
 }
 
 }  // namespace centrec::config

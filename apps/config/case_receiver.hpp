@@ -38,7 +38,7 @@ struct ReceiverCase {
 ReceiverCase read_receiver(MapReader receiver, MapReader dem);
 
 // Applies the receiver to the DEM case. With dem_diameter_d: the drum (diameter, length,
-// speed, tilt) and the feeder's mass flow by eqs 1-3. Otherwise the given DEM drum is used
+// speed, tilt) and the mass flow (the feeder's, or a slice's target) by eqs 1-3. Otherwise the given DEM drum is used
 // as it is, unless `follow_speed_and_flow` (a sweep changed the receiver's operating point):
 // then it keeps its size and takes the receiver's omega^2 R and mdot / R (eqs 1-2).
 // Throws std::invalid_argument when the tilts disagree.

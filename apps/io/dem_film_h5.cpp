@@ -47,25 +47,25 @@ dem::scene::FilmFields read_film_fields(const H5File& f) {
   ff.bin_theta = f.read("/film/bin_theta");
   ff.surface_velocity = f.read("/film/surface_axial_velocity");
   for (double z : f.read("/film/moving_zone_of_bin")) ff.zones.zone_of_bin.push_back(z > 0.5 ? 1 : 0);
-  const auto [at, az] = read_pair(f, "/film/arc_theta", "/film/arc_z_over_length");
-  for (std::size_t k = 0; k < at.size(); ++k) ff.arcs.push_back({at[k], az[k]});
   ff.bin_centre_d = f.read("/film/wall_distance_d");
-  ff.velocity_profiles = read_profiles(f, "/film/axial_velocity");
-  ff.solid_fraction = read_profiles(f, "/film/solid_fraction");
   const auto [dc, ds] = read_pair(f, "/film/dispersion", "/film/dispersion_std");
   ff.dispersion.resize(dc.size());
   for (std::size_t k = 0; k < dc.size(); ++k) ff.dispersion[k].coefficient = dc[k], ff.dispersion[k].coefficient_std = ds[k];
+  ff.ring_z = f.read("/film/ring_z");
+  ff.ring_solid_fraction = read_profiles(f, "/film/ring_solid_fraction");
+  ff.ring_volume_flux = read_profiles(f, "/film/ring_volume_flux");
   return ff;
 }
 }  // namespace
 
 coupling::DemFilmAverages read_dem_film(const std::string& path, const dem::scene::SceneConfig& scene,
-                                        double flow_window_turns) {
+                                        double flow_window_turns, double steady_tolerance) {
   const H5File f = H5File::open_read(path);
   if (!f.exists("/film"))
     throw std::runtime_error(path + ": no /film group (the DEM case needs sampling.turns > 0 for film fields)");
   try {
-    return coupling::dem_film_averages(read_film_fields(f), scene, read_mass_flow_log(f), flow_window_turns);
+    return coupling::dem_film_averages(read_film_fields(f), scene, read_mass_flow_log(f), flow_window_turns,
+                                       steady_tolerance);
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": " + e.what());
   }

@@ -12,6 +12,6 @@ namespace centrec::io {
 
 // Throws std::runtime_error naming the file and the missing or inconsistent item.
 coupling::DemFilmAverages read_dem_film(const std::string& path, const dem::scene::SceneConfig& scene,
-                                        double flow_window_turns);
+                                        double flow_window_turns, double steady_tolerance);
 
 }  // namespace centrec::io

@@ -14,8 +14,9 @@ namespace {
 
 void write_mass_flow(H5File& f, const std::vector<dem::scene::MassFlowSample>& log) {
   f.create_group("/mass_flow");
-  std::vector<double> t, fed, out, lost, hold, n;
+  std::vector<double> t, fed, out, lost, hold, n, axial;
   for (const auto& s : log) {
+    axial.push_back(s.axial_flow);
     t.push_back(s.time);
     fed.push_back(s.fed);
     out.push_back(s.out);
@@ -29,6 +30,7 @@ void write_mass_flow(H5File& f, const std::vector<dem::scene::MassFlowSample>& l
   f.write("/mass_flow/lost", lost, "kg");
   f.write("/mass_flow/holdup", hold, "kg");
   f.write("/mass_flow/particles", n, "1");
+  f.write("/mass_flow/slice_axial_flow", axial, "kg/s");
 }
 
 // [rows][bins] profile bins -> mean, std and period-count matrices.
@@ -90,6 +92,12 @@ void write_film(H5File& f, const dem::scene::FilmFields& ff) {
   f.write("/film/dispersion_std", ds, "m^2/s");
   f.write("/film/dispersion_drift", dd, "m/s");
   f.set_attribute("/film/dispersion", "lag_s", ff.dispersion_lag);
+  f.write("/film/ring_z", ff.ring_z, "m");
+  write_profiles(f, "/film/ring_solid_fraction", ff.ring_solid_fraction, "1");
+  write_profiles(f, "/film/ring_volume_flux", ff.ring_volume_flux, "m/s");
+  f.set_attribute("/film/ring_volume_flux_mean", "meaning",
+                  "phi * u over the whole circumference per axial section (rows) and wall-distance bin; "
+                  "axial mass flow of a section = rho_s * sum over bins of this * shell area");
 }
 
 void write_snapshot(H5File& f, const NamedSnapshot& s) {
@@ -139,11 +147,18 @@ std::string xdmf(const std::vector<NamedSnapshot>& snaps) {
 std::vector<dem::scene::MassFlowSample> read_mass_flow_log(const H5File& f) {
   const std::vector<double> t = f.read("/mass_flow/time"), fed = f.read("/mass_flow/fed"), out = f.read("/mass_flow/out");
   if (fed.size() != t.size() || out.size() != t.size()) throw std::runtime_error("/mass_flow: time, fed and out differ in length");
+  const std::vector<double> hold = f.read("/mass_flow/holdup"), n = f.read("/mass_flow/particles"),
+                            axial = f.read("/mass_flow/slice_axial_flow");
+  if (hold.size() != t.size() || n.size() != t.size() || axial.size() != t.size())
+    throw std::runtime_error("/mass_flow: holdup, particles and slice_axial_flow differ in length from time");
   std::vector<dem::scene::MassFlowSample> log(t.size());
   for (std::size_t k = 0; k < t.size(); ++k) {
     log[k].time = t[k];
     log[k].fed = fed[k];
     log[k].out = out[k];
+    log[k].holdup = hold[k];
+    log[k].particles = static_cast<std::int64_t>(n[k]);
+    log[k].axial_flow = axial[k];
   }
   return log;
 }

@@ -13,23 +13,29 @@ void write_coupling_group(io::H5File& f, const CoupledRun& r) {
   f.create_group("/coupling");
   f.set_attribute("/coupling", "film_source", r.thermal.film_source);
   if (!r.film_from_dem) return;
-  const auto& c = r.conservation;
+  const auto& c = r.closure;
+  const auto& m = r.imposed;
   f.set_attribute("/coupling", "dem_cache_key", r.cache_key);
-  f.set_attribute("/coupling", "dem_mdot_kg_s", r.averages.mdot);
-  f.set_attribute("/coupling", "imposed_mdot_kg_s", c.mdot);
-  f.set_attribute("/coupling", "drum_radius_m", c.drum_radius);
-  f.set_attribute("/coupling", "mean_flux_depth_m", c.mean_flux_depth);
-  f.set_attribute("/coupling", "planar_diameter_m", c.planar_diameter);
-  f.set_attribute("/coupling", "max_cylindrical_flux_error", c.max_cylindrical_error);
-  f.set_attribute("/coupling", "moving_fraction", r.tangential.moving_fraction);
-  f.set_attribute("/coupling", "tangential_velocity_factor", r.tangential.velocity_factor);
+  f.set_attribute("/coupling", "dem_measured_mdot_kg_s", r.averages.mdot);
+  f.set_attribute("/coupling", "dem_target_mdot_kg_s", r.averages.mdot_target);
+  f.set_attribute("/coupling", "dem_steady", r.averages.steady ? 1.0 : 0.0);
+  f.set_attribute("/coupling", "dem_steady_state", r.averages.steady_text);
+  f.set_attribute("/coupling", "film_solid_fraction_cut", r.cut.phi_cut);
+  f.set_attribute("/coupling", "flow_closure_mean", c.mean_over_measured);
+  f.set_attribute("/coupling", "flow_closure_worst_error", c.worst_error);
+  f.set_attribute("/coupling", "imposed_mdot_kg_s", m.mdot);
+  f.set_attribute("/coupling", "imposed_velocity_factor", m.factor);
+  f.set_attribute("/coupling", "drum_radius_m", m.drum_radius);
+  f.set_attribute("/coupling", "mean_flux_depth_m", m.mean_flux_depth);
+  f.set_attribute("/coupling", "planar_diameter_m", m.planar_diameter);
+  f.set_attribute("/coupling", "moving_fraction", r.averages.moving_fraction);
   f.set_attribute("/coupling", "scaling", r.thermal.film.scaling);
-  f.write("/coupling/sampled_flux_over_mdot", c.sampled_over_mdot, "1");
+  f.write("/coupling/flow_closure", c.section_over_measured, "1");
+  f.write("/coupling/film_thickness", r.cut.thickness, "m");
+  f.write("/coupling/flow_within_film_share", r.cut.flow_within_share, "1");
   f.write("/coupling/dem_section_z", r.averages.section_z, "m");
   f.write("/coupling/dem_thickness", r.averages.thickness, "m");
   f.write("/coupling/dem_thickness_std", r.averages.thickness_std, "m");
-  f.write("/coupling/profile_z", r.tangential.profile_z, "m");
-  f.write("/coupling/profile_flux_over_mdot", r.tangential.profile_flux_over_mdot, "1");
 }
 }  // namespace
 
@@ -62,32 +68,39 @@ nlohmann::json coupled_summary(const CoupledRun& r) {
                       {"thermal", r.thermal_seconds},
                       {"total", r.dem_seconds + r.mapping_seconds + r.thermal_seconds}};
   if (!r.film_from_dem) return j;
-  const auto& c = r.conservation;
+  const auto& c = r.closure;
+  const auto& m = r.imposed;
   const auto& sd = r.dem.scene;
   j["dem"] = {{"cached", r.dem_cached},
               {"resumed_from", r.dem_resumed_from},
               {"cache_key", r.cache_key},
               {"dir", r.dem_dir},
+              {"mode", sd.slice.enabled ? "slice" : "drum"},
               {"drum_diameter_m", sd.drum.diameter},
+              {"drum_diameter_over_d", sd.drum.diameter / sd.particle.diameter},
               {"drum_length_m", sd.drum.length},
               {"speed_rpm", coupling::rad_per_s_to_rpm(sd.drum.omega)},
-              {"feeder_mdot_kg_s", sd.feeder.mass_flow},
-              {"outlet_mdot_kg_s", r.averages.mdot},
+              {"target_mdot_kg_s", r.averages.mdot_target},
+              {"measured_mdot_kg_s", r.averages.mdot},
+              {"steady", r.averages.steady},
+              {"steady_state", r.averages.steady_text},
+              {"moving_fraction", r.averages.moving_fraction},
               {"sampled_turns", r.averages.sampled_turns},
               {"summary", r.dem_summary}};
-  double lo = 1e300, hi = -1e300;
-  for (double x : c.sampled_over_mdot) lo = std::min(lo, x), hi = std::max(hi, x);
-  j["coupling"] = {{"imposed_mdot_kg_s", c.mdot},
-                   {"sampled_flux_over_mdot_min", lo},
-                   {"sampled_flux_over_mdot_max", hi},
-                   {"max_cylindrical_flux_error", c.max_cylindrical_error},
-                   {"mean_flux_depth_m", c.mean_flux_depth},
-                   {"planar_diameter_m", c.planar_diameter},
-                   {"moving_fraction", r.tangential.moving_fraction},
-                   {"tangential_velocity_factor", r.tangential.velocity_factor},
-                   {"filled_bins", r.tangential.filled_bins},
-                   {"profile_z_m", r.tangential.profile_z},
-                   {"dem_profile_flux_over_mdot", r.tangential.profile_flux_over_mdot}};
+  double lo = 1e300, hi = -1e300, share_lo = 1e300;
+  for (double x : c.section_over_measured) lo = std::min(lo, x), hi = std::max(hi, x);
+  for (double x : r.cut.flow_within_share) share_lo = std::min(share_lo, x);
+  j["coupling"] = {{"film_solid_fraction_cut", r.cut.phi_cut},
+                   {"flow_closure_mean", c.mean_over_measured},
+                   {"flow_closure_min", lo},
+                   {"flow_closure_max", hi},
+                   {"flow_closure_tolerance", coupling::kFlowClosureTolerance},
+                   {"flow_within_film_share_min", share_lo},
+                   {"imposed_mdot_kg_s", m.mdot},
+                   {"imposed_velocity_factor", m.factor},
+                   {"mean_flux_depth_m", m.mean_flux_depth},
+                   {"planar_diameter_m", m.planar_diameter}};
+  j["warnings"] = r.warnings;
   if (r.has_receiver) {
     const auto& s = r.scale;
     j["scaling"] = {{"receiver_diameter_m", r.receiver.op.diameter},

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "coupling/dem_film_from_run.hpp"
+#include "dem/scene/scene_config.hpp"
 #include "io/code_version.hpp"
 #include "io/dem_film_h5.hpp"
 #include "runs/dem_cache.hpp"
@@ -35,7 +36,7 @@ void effective_dem(const config::CaseFile& cf, const RunOptions& o, CoupledRun& 
     config::apply_receiver(r.receiver, r.dem, overridden);
   } else {
     if (o.speed_rpm > 0.0) r.dem.scene.drum.omega = coupling::rpm_to_rad_per_s(o.speed_rpm);
-    if (o.mass_flow > 0.0) r.dem.scene.feeder.mass_flow = o.mass_flow;
+    if (o.mass_flow > 0.0) dem::scene::set_target_mass_flow(r.dem.scene, o.mass_flow);
   }
 }
 
@@ -43,6 +44,16 @@ std::string resolved_dem_section(const config::CaseFile& cf) {
   YAML::Emitter e;
   e << YAML::Load(cf.resolved_yaml)["dem"];
   return e.c_str();
+}
+
+// A condition the coupled run refuses unless its flag allows it; allowed, it becomes a
+// warning on stderr and in the outputs. `problem` "" = nothing to refuse.
+void allow_or_refuse(CoupledRun& r, const std::string& problem, bool allowed, const char* flag,
+                     const std::string& where) {
+  if (problem.empty()) return;
+  if (!allowed) throw std::invalid_argument(where + ": " + problem + "; " + flag + " runs it anyway (with a warning)");
+  std::fprintf(stderr, "centrec run: WARNING: %s (allowed by %s)\n", problem.c_str(), flag);
+  r.warnings.push_back(problem);
 }
 
 void check_same_particles(const CoupledRun& r) {
@@ -68,6 +79,8 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
     if (!cf.dem) throw std::invalid_argument(cf.path + ": give a `dem:` section or `film: {file: ...}`");
     effective_dem(cf, o, r);
     check_same_particles(r);
+    allow_or_refuse(r, coupling::scale_down_validity(r.dem.scene.drum.diameter, r.dem.scene.particle.diameter),
+                    o.allow_small_drum, "--allow-small-drum", cf.path);
     if (!(r.dem.sampling.turns > 0.0))
       throw std::invalid_argument(cf.path + ": dem.sampling.turns must be > 0: the coupling needs film fields");
     // 1. DEM, or its cached outputs.
@@ -89,8 +102,10 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
     // 2. Mapping, scale-up, mass-flux conservation.
     const auto t1 = std::chrono::steady_clock::now();
     try {
-      r.averages = ran ? coupling::dem_film_averages(ran->fields, r.dem.scene, ran->mass_flow, r.dem.run.flow_window_turns)
-                       : io::read_dem_film(r.dem_dir + "/dem.h5", r.dem.scene, r.dem.run.flow_window_turns);
+      r.averages = ran ? coupling::dem_film_averages(ran->fields, r.dem.scene, ran->mass_flow, r.dem.run.flow_window_turns,
+                                                   r.dem.run.steady_tolerance)
+                     : io::read_dem_film(r.dem_dir + "/dem.h5", r.dem.scene, r.dem.run.flow_window_turns,
+                                         r.dem.run.steady_tolerance);
     } catch (const std::exception& e) {
       // The usual cause: no film formed (too slow a drum for this retention, too short a run).
       const auto op = config::dem_operating_point(r.dem);
@@ -98,15 +113,28 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
                                std::to_string(coupling::centrifugal_ratio(op)) + " and ended with a holdup of " +
                                std::to_string(r.dem_summary.value("holdup_kg", 0.0) * 1e3) + " g");
     }
+    allow_or_refuse(r, r.averages.steady ? "" : "the DEM film is not at steady flow: " + r.averages.steady_text +
+                                                     " (tolerance run.steady_tolerance = " +
+                                                     std::to_string(r.dem.run.steady_tolerance) +
+                                                     "; lengthen run.duration or run.max_extension)",
+                    o.allow_unsteady, "--allow-unsteady", r.dem_dir);
     coupling::MappedFilm mapped = coupling::map_dem_film(r.averages);
-    r.tangential = mapped.tangential;
+    r.cut = mapped.cut;
     thermal::FilmField film = std::move(mapped.film);
-    double mdot = r.averages.mdot;
+    // The flow the film carries, against the DEM's measured flow, at the DEM's scale.
+    r.closure = coupling::flow_closure(film, r.averages.particle_density, r.averages.mdot);
+    const double miss = r.closure.mean_over_measured - 1.0;
+    allow_or_refuse(r, std::abs(miss) <= coupling::kFlowClosureTolerance ? "" : "the mapped film carries " +
+                           std::to_string(100.0 * r.closure.mean_over_measured) +
+                           " % of the DEM's measured flow (closure tolerance 5 %)",
+                    o.allow_unsteady, "--allow-unsteady", r.dem_dir);
+    // The case's flow: the receiver's, or the DEM's own target (feed or slice target).
+    double mdot = dem::scene::target_mass_flow(r.dem.scene);
     if (r.has_receiver) {
       film = coupling::scale_up_film(film, config::dem_operating_point(r.dem), r.receiver.op, &r.scale);
-      mdot *= r.scale.radius_ratio;  // eq (2): the DEM's measured flow carried to the receiver
+      mdot = r.receiver.op.mass_flow;
     }
-    r.conservation = coupling::conserve_mass_flow(film, r.averages.particle_density, mdot);
+    r.imposed = coupling::impose_mass_flow(film, r.averages.particle_density, mdot);
     r.thermal.film = std::move(film);
     r.thermal.film_source = "dem: " + r.dem_dir + "/dem.h5";
     r.mapping_seconds = since(t1);

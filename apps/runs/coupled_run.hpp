@@ -2,11 +2,15 @@
 // The coupled run behind `centrec run` (docs/architecture.md):
 // DEM of the scaled-down drum -> its averaged film (coupling/dem_film_from_run, in memory;
 // read back from dem.h5 when the DEM comes from the cache) ->
-// tangentially averaged film field (coupling/film_mapping) -> scale-up to the receiver
-// (coupling/film_scale_up) -> mass-flux conservation (coupling/film_mass_flow) ->
-// thermal steady state (and transient). A case that gives `film: {file: ...}` skips the DEM.
+// the film as measured, full circumference (coupling/film_mapping) -> its flux closure
+// against the DEM's measured flow (coupling/film_mass_flow) -> scale-up to the receiver
+// (coupling/film_scale_up) -> the case's mass flow imposed by one factor -> thermal steady
+// state (and transient). A case that gives `film: {file: ...}` skips the DEM.
+// Refused unless allowed (then carried as warnings): a DEM drum below the scale-down
+// validity threshold, a DEM not at steady flow, a flux closure off by more than 5 %.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "config/case_file.hpp"
 #include "coupling/dem_film_averages.hpp"
@@ -22,6 +26,8 @@ struct RunOptions {
   double speed_rpm = 0.0;     // > 0: the receiver's (or, without one, the DEM drum's) speed
   double mass_flow = 0.0;     // > 0: the receiver's (or the DEM feeder's) mass flow, kg/s
   int threads = -1;           // DEM threads (-1 = from the case)
+  bool allow_small_drum = false;  // run a DEM drum below coupling::kMinimumDrumDiameterOverD
+  bool allow_unsteady = false;    // use a film that is not steady or fails the flux closure
 };
 
 struct CoupledRun {
@@ -34,9 +40,11 @@ struct CoupledRun {
   std::string dem_resumed_from;  // the killed run's cache folder this run continued ("" = none)
   nlohmann::json dem_summary;
   coupling::DemFilmAverages averages;
-  coupling::TangentialAverage tangential;
+  coupling::FilmCut cut;
+  coupling::FlowClosure closure;
   coupling::ScaleUpRecord scale;
-  coupling::MassFlowConservation conservation;
+  coupling::ImposedFlow imposed;
+  std::vector<std::string> warnings;  // what was allowed although not valid
   config::ThermalCase thermal;             // with the coupled film
   ThermalRun result;
   double dem_seconds = 0.0, mapping_seconds = 0.0, thermal_seconds = 0.0;

@@ -27,10 +27,10 @@ std::uint64_t fnv1a(const std::string& s) {
 
 std::string dem_cache_key(const std::string& resolved_dem_yaml, const config::DemCase& e, const std::string& version) {
   // The resolved section holds every key with its default; the values a receiver derives
-  // (drum and feed) are not in it, so they are appended at full precision.
+  // (drum and flow) are not in it, so they are appended at full precision.
   char derived[256];
   std::snprintf(derived, sizeof derived, "\nderived: %.17g %.17g %.17g %.17g %.17g\n", e.scene.drum.diameter,
-                e.scene.drum.length, e.scene.drum.omega, e.scene.drum.tilt, e.scene.feeder.mass_flow);
+                e.scene.drum.length, e.scene.drum.omega, e.scene.drum.tilt, dem::scene::target_mass_flow(e.scene));
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx",
                 static_cast<unsigned long long>(fnv1a(resolved_dem_yaml + derived + "version: " + version)));

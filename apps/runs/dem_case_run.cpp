@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/mass_flow_window.hpp"
 #include "dem/scene/scene_sampler.hpp"
 #include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
@@ -72,12 +73,29 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   };
 
   // Spin-up (filling, reaching steady state), then sampling turn by turn.
+  // Past run.duration the spin-up goes on, chunk by chunk, until the flow is steady over the
+  // flow window (dem/scene/mass_flow_window.hpp) or run.max_extension more has passed; the
+  // run report then says whether it was steady.
+  const double window = dc.run.flow_window_turns * period, cap = dc.run.duration + dc.run.max_extension;
+  auto steadiness = [&] {
+    return dem::scene::flow_steadiness(scene.mass_flow_log(), dc.scene, window, dc.run.steady_tolerance);
+  };
   if (!ck || ck->phase == "spin-up") {
     while (sim.time() < dc.run.duration - 0.5 * sim.dt()) {
       advance([&] { scene.advance(std::min(chunk, dc.run.duration - sim.time())); });
       sim.rebuild_lists();
       checkpoint("spin-up", false);
     }
+    bool told = false;
+    while (sim.time() < cap - 0.5 * sim.dt() && !steadiness().steady) {
+      if (!told) std::fprintf(stderr, "  not steady at t = %.4g s (%s): spin-up extended, up to t = %.4g s\n",
+                              sim.time(), steadiness().describe().c_str(), cap);
+      told = true;
+      advance([&] { scene.advance(std::min(chunk, cap - sim.time())); });
+      sim.rebuild_lists();
+      checkpoint("spin-up", false);
+    }
+    if (told) std::fprintf(stderr, "  spin-up ended at t = %.4g s: %s\n", sim.time(), steadiness().describe().c_str());
   }
   auto keep = [&](dem::scene::SnapshotArrays s) {
     char name[32];

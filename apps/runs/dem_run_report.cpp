@@ -35,7 +35,8 @@ film::SteadyStateResult steady_state(const std::vector<dem::scene::MassFlowSampl
 nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, const io::DemRunResult& r) {
   const double period = dem::scene::turn_period(dc.scene);
   const double window = dc.run.flow_window_turns * period;
-  const auto [fed_rate, out_rate] = dem::scene::window_flows(r.mass_flow, window);
+  const auto flows = dem::scene::window_flows(r.mass_flow, window);
+  const double fed_rate = flows.fed, out_rate = flows.out;
   const auto& log = r.mass_flow;
   const auto& fields = r.fields;
   nlohmann::json j;
@@ -59,20 +60,21 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
   j["inlet_mdot_kg_s"] = fed_rate;
   j["outlet_mdot_kg_s"] = out_rate;
   j["flow_window_s"] = window;
+  // Steady over the last flow window (dem/scene/mass_flow_window.hpp): the film a coupled
+  // run may use.
+  const auto steady = dem::scene::flow_steadiness(log, dc.scene, window, dc.run.steady_tolerance);
+  j["steady_state"] = steady.steady;
+  j["steady_flow_error"] = std::isfinite(steady.flow_error) ? nlohmann::json(steady.flow_error) : nlohmann::json(nullptr);
+  j["steady_holdup_drift"] = std::isfinite(steady.holdup_drift) ? nlohmann::json(steady.holdup_drift) : nlohmann::json(nullptr);
+  j["steady_tolerance"] = dc.run.steady_tolerance;
+  j["steady_state_text"] = steady.describe();
   if (fed && log.size() > 2) {
     const auto ss = steady_state(log, window, dc.run.steady_tolerance);
-    j["steady_state"] = ss.steady;
     j["time_to_steady_state_s"] = ss.steady ? nlohmann::json(ss.time) : nlohmann::json(nullptr);
   }
   if (dc.scene.slice.enabled) {
     // Axial mass flow of the slice, mean over the flow window (and the controller's record).
-    double sum = 0.0;
-    std::size_t n = 0;
-    for (std::size_t k = log.size(); k-- > 1 && log.back().time - log[k].time < window;) {
-      sum += log[k].axial_flow;
-      ++n;
-    }
-    j["slice_mdot_kg_s"] = n ? sum / static_cast<double>(n) : 0.0;
+    j["slice_mdot_kg_s"] = flows.axial;
     j["slice_target_mdot_kg_s"] = dc.scene.slice.target_mass_flow;
     nlohmann::json windows = nlohmann::json::array();
     for (const auto& w : r.controller)
@@ -117,10 +119,17 @@ void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf
   io::write_text_atomically(out_dir + "/mass_flow.csv", mass_flow_csv(r.mass_flow));
 
   const double window = dc.run.flow_window_turns * dem::scene::turn_period(dc.scene);
-  const auto [fed_rate, out_rate] = dem::scene::window_flows(r.mass_flow, window);
+  const auto flows = dem::scene::window_flows(r.mass_flow, window);
   const double rate = r.wall_time > 0.0 ? r.particle_steps / r.wall_time : 0.0;
-  std::printf("holdup %.4f kg (%lld particles), inlet %.3f g/s, outlet %.3f g/s over the last %.2f s\n", r.holdup_kg,
-              static_cast<long long>(r.free_particles), fed_rate * 1e3, out_rate * 1e3, window);
+  if (dc.scene.slice.enabled)
+    std::printf("holdup %.4f kg (%lld particles), slice axial flow %.3f g/s over the last %.2f s\n", r.holdup_kg,
+                static_cast<long long>(r.free_particles), flows.axial * 1e3, window);
+  else
+    std::printf("holdup %.4f kg (%lld particles), inlet %.3f g/s, outlet %.3f g/s over the last %.2f s\n", r.holdup_kg,
+                static_cast<long long>(r.free_particles), flows.fed * 1e3, flows.out * 1e3, window);
+  std::printf("flow: %s (tolerance %.0f %%)\n",
+              dem::scene::flow_steadiness(r.mass_flow, dc.scene, window, dc.run.steady_tolerance).describe().c_str(),
+              100.0 * dc.run.steady_tolerance);
   std::printf("%.3g particle-steps/s, wall time %.1f s; wrote %s/summary.json\n", rate, r.wall_time, out_dir.c_str());
   if (r.fields.snapshots > 0)
     std::printf("film thickness %.2f +- %.2f d over %zu turns\n", r.fields.mean_thickness.mean_d,

@@ -1,15 +1,71 @@
 #include "dem/scene/mass_flow_window.hpp"
 
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
 namespace centrec::dem::scene {
+
+namespace {
+// Index of the latest sample at least `window` before the last (0 if the log is shorter).
+std::size_t window_start(const std::vector<MassFlowSample>& log, double window) {
+  std::size_t k = log.size() - 1;
+  while (k > 0 && log.back().time - log[k].time < window) --k;
+  return k;
+}
+
+// Mean of the slice's instantaneous axial flow over samples (from, to].
+double mean_axial(const std::vector<MassFlowSample>& log, std::size_t from, std::size_t to) {
+  double sum = 0.0;
+  for (std::size_t k = from + 1; k <= to; ++k) sum += log[k].axial_flow;
+  return to > from ? sum / static_cast<double>(to - from) : 0.0;
+}
+}  // namespace
 
 WindowFlows window_flows(const std::vector<MassFlowSample>& log, double window) {
   if (log.size() < 2) return {};
   const auto& last = log.back();
-  std::size_t k = log.size() - 1;
-  while (k > 0 && last.time - log[k].time < window) --k;
+  const std::size_t k = window_start(log, window);
   const double dt = last.time - log[k].time;
   if (dt <= 0.0) return {};
-  return {(last.fed - log[k].fed) / dt, (last.out - log[k].out) / dt};
+  return {(last.fed - log[k].fed) / dt, (last.out - log[k].out) / dt, mean_axial(log, k, log.size() - 1),
+          log[k].holdup, last.holdup, dt};
+}
+
+FlowSteadiness flow_steadiness(const std::vector<MassFlowSample>& log, const SceneConfig& scene, double window,
+                               double tolerance) {
+  FlowSteadiness s;
+  s.slice = scene.slice.enabled;
+  s.flow_error = std::numeric_limits<double>::infinity();
+  if (log.size() < 3) return s;
+  const WindowFlows w = window_flows(log, window);
+  s.window = w.seconds;
+  s.holdup_drift = w.holdup_start > 0.0 ? w.holdup_end / w.holdup_start - 1.0 : std::numeric_limits<double>::infinity();
+  if (s.slice) {
+    s.measured = w.axial;
+    if (scene.slice.target_mass_flow > 0.0) {
+      s.target = scene.slice.target_mass_flow;
+    } else {  // no target: the first half of the window against the second
+      const std::size_t k0 = window_start(log, window), k1 = window_start(log, 0.5 * window);
+      s.target = mean_axial(log, k0, k1);
+      s.measured = mean_axial(log, k1, log.size() - 1);
+    }
+  } else {
+    s.measured = w.out;
+    s.target = w.fed;
+  }
+  if (s.target > 0.0) s.flow_error = s.measured / s.target - 1.0;
+  s.steady = std::abs(s.flow_error) <= tolerance && std::abs(s.holdup_drift) <= tolerance;
+  return s;
+}
+
+std::string FlowSteadiness::describe() const {
+  char line[200];
+  std::snprintf(line, sizeof line, "%s %.4g vs %s %.4g g/s (%+.1f %%), holdup %+.1f %% over %.3g s: %s",
+                slice ? "axial flow" : "outlet", measured * 1e3,
+                slice ? "target" : "feed", target * 1e3, 100.0 * flow_error, 100.0 * holdup_drift, window,
+                steady ? "steady" : "NOT steady");
+  return line;
 }
 
 }  // namespace centrec::dem::scene

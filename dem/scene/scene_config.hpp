@@ -82,7 +82,8 @@ struct SceneConfig {
   ParticleSpec particle;
   Material wall_material;
   PairInteraction particle_particle;                 // paper Table 1
-  PairInteraction particle_wall{0.46, 10000.0, 0.26};  // paper: wall friction 10000
+  PairInteraction particle_wall{0.46, 10000.0, 0.26};
+  // paper: wall friction 10000
   WallRolling wall_rolling = WallRolling::relative;
   DrumSpec drum;
   RoughWallSpec rough_wall;
@@ -96,5 +97,13 @@ struct SceneConfig {
   int threads = 0;
   std::uint64_t seed = 12345;
 };
+
+// The flow a scene is run at: the slice controller's target in slice mode, else the feed.
+inline double target_mass_flow(const SceneConfig& c) {
+  return c.slice.enabled ? c.slice.target_mass_flow : c.feeder.mass_flow;
+}
+inline void set_target_mass_flow(SceneConfig& c, double mdot) {
+  (c.slice.enabled ? c.slice.target_mass_flow : c.feeder.mass_flow) = mdot;
+}
 
 }  // namespace centrec::dem::scene

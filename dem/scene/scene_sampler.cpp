@@ -61,6 +61,12 @@ SceneSampler::SceneSampler(const SceneConfig& c, const SamplingSpec& spec) : spe
   }
   solid_ = std::make_unique<film::SolidFractionSampler>(frame_, sc);
   dispersion_ = std::make_unique<film::DispersionEstimator>(frame_, bins);
+
+  film::RingProfileConfig rc;
+  rc.bins = bins;
+  rc.sections = grid_.axial_sections;
+  rc.z_max = length;
+  ring_ = std::make_unique<film::RingProfileSampler>(frame_, rc);
 }
 
 void SceneSampler::add_snapshot(SnapshotArrays s) {
@@ -68,6 +74,7 @@ void SceneSampler::add_snapshot(SnapshotArrays s) {
   thickness_.add(film::sample_film_sections(p, frame_, grid_));
   velocity_->add_snapshot(p);
   solid_->add_snapshot(p);
+  ring_->add_snapshot(p);
   if (previous_) dispersion_->add_pair(previous_->view(), p);
   previous_ = std::move(s);
   ++snapshots_;
@@ -89,6 +96,7 @@ void SceneSampler::sample_turns(CentrecScene& scene, double turns) {
 void SceneSampler::end_turn() {
   velocity_->end_period();
   solid_->end_period();
+  ring_->end_period();
   ++turns_;
 }
 
@@ -141,6 +149,11 @@ FilmFields SceneSampler::fields() const {
   }
   f.dispersion = dispersion_->result();
   f.dispersion_lag = dispersion_->lag();
+  for (int a = 0; a < ring_->config().sections; ++a) {
+    f.ring_z.push_back(ring_->section_centre(a));
+    f.ring_solid_fraction.push_back(ring_->solid_fraction(a));
+    f.ring_volume_flux.push_back(ring_->volume_flux(a));
+  }
   return f;
 }
 
@@ -152,6 +165,7 @@ std::vector<double> SceneSampler::save() const {
   velocity_->save(out);
   solid_->save(out);
   dispersion_->save(out);
+  ring_->save(out);
   out.put(previous_ ? 1.0 : 0.0);
   if (previous_) {
     out.put(previous_->time);
@@ -171,6 +185,7 @@ void SceneSampler::load(const std::vector<double>& state) {
   velocity_->load(in);
   solid_->load(in);
   dispersion_->load(in);
+  ring_->load(in);
   previous_.reset();
   if (in.get() != 0.0) {
     SnapshotArrays s;

@@ -8,6 +8,7 @@
 
 #include "dem/film/dispersion.hpp"
 #include "dem/film/film_sections.hpp"
+#include "dem/film/ring_profile.hpp"
 #include "dem/film/solid_fraction.hpp"
 #include "dem/film/velocity_profile.hpp"
 #include "dem/film/zone_boundaries.hpp"
@@ -42,6 +43,11 @@ struct FilmFields {
   std::vector<std::vector<film::ProfileBin>> solid_fraction;     // [0 stationary, 1 moving][bin]
   std::vector<film::DispersionBin> dispersion;                   // per wall-distance bin
   double dispersion_lag = 0.0;                                   // s
+  // Full-circumference profiles per axial section (dem/film/ring_profile.hpp): the film
+  // the coupling hands to the thermal model. [section][bin], on the bin_centre_d axis.
+  std::vector<double> ring_z;                                    // m, section centres
+  std::vector<std::vector<film::ProfileBin>> ring_solid_fraction;  // 1
+  std::vector<std::vector<film::ProfileBin>> ring_volume_flux;     // m/s: phi * u
 };
 
 // Engine-neutral: the frame comes from the SceneConfig alone, so snapshots read from
@@ -73,6 +79,7 @@ class SceneSampler {
   std::unique_ptr<film::VelocityProfileSampler> velocity_;
   std::unique_ptr<film::SolidFractionSampler> solid_;  // one zone per tangential bin
   std::unique_ptr<film::DispersionEstimator> dispersion_;
+  std::unique_ptr<film::RingProfileSampler> ring_;
   std::optional<SnapshotArrays> previous_;
   std::size_t turns_ = 0, snapshots_ = 0;
 };
