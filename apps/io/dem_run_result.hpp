@@ -13,7 +13,8 @@ namespace centrec::io {
 
 struct NamedSnapshot {
   std::string name;  // group name, e.g. "t0.500000"
-  dem::scene::SnapshotArrays data;
+  dem::scene::SnapshotArrays data;    // the free particles (what the film samplers see)
+  dem::scene::SnapshotArrays glued;   // the glued rough-wall layer at the same time (may be empty)
 };
 
 struct DemRunResult {

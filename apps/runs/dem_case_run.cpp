@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/mass_flow_window.hpp"
 #include "dem/scene/scene_sampler.hpp"
 #include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
@@ -16,6 +17,23 @@
 #include "runs/progress_meter.hpp"
 
 namespace centrec::runs {
+
+namespace {
+// The glued rough-wall layer (Motion::drum) in the snapshot layout, for the outputs only.
+dem::scene::SnapshotArrays glued_layer(const dem::Simulation& sim) {
+  dem::scene::SnapshotArrays s;
+  s.time = sim.time();
+  for (std::size_t i = 0; i < sim.size(); ++i) {
+    if (sim.motions()[i] == dem::Motion::free) continue;
+    const dem::Vec3 x = sim.positions()[i], v = sim.velocities()[i];
+    s.x.push_back(x.x), s.y.push_back(x.y), s.z.push_back(x.z);
+    s.vx.push_back(v.x), s.vy.push_back(v.y), s.vz.push_back(v.z);
+    s.radius.push_back(sim.radii()[i]);
+    s.id.push_back(sim.ids()[i]);
+  }
+  return s;
+}
+}  // namespace
 
 io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir,
                                   const std::optional<io::RunCheckpoint>& ck) {
@@ -34,12 +52,19 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   const double chunk = std::max(sim.dt() * scene.steps_per_batch(), std::min(0.01, dc.run.duration));
   const double steps_before = ck ? ck->particle_steps : 0.0, wall_before = ck ? ck->wall_time : 0.0;
   double particle_steps = 0.0;  // this process's
+  // Progress lines carry the outlet and inlet flow over the last turn.
+  auto flows = [&] {
+    const auto w = dem::scene::window_flows(scene.mass_flow_log(), period);
+    char b[96];
+    std::snprintf(b, sizeof b, "outlet %.2f g/s, inlet %.2f g/s", w.out * 1e3, w.fed * 1e3);
+    return std::string(b);
+  };
   auto advance = [&](auto&& body) {
     const std::int64_t s0 = sim.step_count();
     const double n0 = static_cast<double>(sim.size());
     body();
     particle_steps += 0.5 * (n0 + static_cast<double>(sim.size())) * static_cast<double>(sim.step_count() - s0);
-    progress.update(sim.time(), sim.time() / period, particle_steps);
+    progress.update(sim.time(), sim.time() / period, particle_steps, false, flows);
   };
 
   // Checkpoints. The run rebuilds the neighbour lists at fixed points (after every spin-up
@@ -73,32 +98,51 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
 
   // Spin-up (filling, reaching steady state), then sampling turn by turn.
   if (!ck || ck->phase == "spin-up") {
+    char what[128];
+    std::snprintf(what, sizeof what, "the drum runs to t = %.4g s (dem.run.duration) so the film fills and its outflow settles",
+                  dc.run.duration);
+    progress.phase("spin-up", what);
     while (sim.time() < dc.run.duration - 0.5 * sim.dt()) {
       advance([&] { scene.advance(std::min(chunk, dc.run.duration - sim.time())); });
       sim.rebuild_lists();
       checkpoint("spin-up", false);
     }
   }
-  auto keep = [&](dem::scene::SnapshotArrays s) {
+  // Every snapshot the samplers see is kept for dem.h5 and dem.xmf, with the glued layer
+  // (a resumed run keeps those after its checkpoint and the start snapshot, without glued).
+  auto keep = [&](const dem::scene::SnapshotArrays& s, bool with_glued) {
     char name[32];
     std::snprintf(name, sizeof name, "t%.6f", s.time);
-    snapshots.push_back({name, std::move(s)});
+    snapshots.push_back({name, s, with_glued ? glued_layer(sim) : dem::scene::SnapshotArrays{}});
   };
-  auto keep_snapshot = [&] { keep(dem::scene::take_snapshot(sim)); };
   if (ck && ck->phase != "spin-up") {
     sampler.load(ck->sampler.at("state"));
-    keep(ck->start_snapshot.value());
+    keep(ck->start_snapshot.value(), false);
   } else {
-    keep_snapshot();  // the film as sampling starts
+    keep(dem::scene::take_snapshot(sim), true);  // the film as sampling starts
   }
-  while (sampled < static_cast<int>(std::floor(dc.sampling.turns + 1e-9))) {
-    advance([&] { sampler.sample_turns(scene, 1.0); });
+  // One turn as SceneSampler::sample_turns does it, keeping each snapshot.
+  auto sample_turn = [&] {
+    for (int k = 0; k < sampler.spec().snapshots_per_turn; ++k) {
+      advance([&] { scene.advance(period / sampler.spec().snapshots_per_turn); });
+      dem::scene::SnapshotArrays s = dem::scene::take_snapshot(sim);
+      keep(s, true);
+      sampler.add_snapshot(std::move(s));
+    }
+    sampler.end_turn();
+  };
+  const int turns = static_cast<int>(std::floor(dc.sampling.turns + 1e-9));
+  if (sampled < turns)
+    progress.phase("sampling", std::to_string(turns) + " turn(s) of " + std::to_string(sampler.spec().snapshots_per_turn) +
+                                   " snapshots each for the film fields (thickness, velocity profiles, solid fraction)");
+  while (sampled < turns) {
+    sample_turn();
     ++sampled;
     sim.rebuild_lists();
     checkpoint("sampling", false);
   }
-  if (sim.time() > snapshots.back().data.time) keep_snapshot();
-  progress.update(sim.time(), sim.time() / period, particle_steps, true);
+  if (sim.time() > snapshots.back().data.time) keep(dem::scene::take_snapshot(sim), true);
+  progress.update(sim.time(), sim.time() / period, particle_steps, true, flows);
   progress.finish();
   checkpoint("done", dc.run.checkpoint_interval > 0.0);
   particle_steps += steps_before;

@@ -10,7 +10,9 @@
 #include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
 #include "io/dem_output_h5.hpp"
+#include "runs/provenance.hpp"
 #include "io/summary_json.hpp"
+#include "runs/dem_flow_status.hpp"
 
 namespace centrec::runs {
 
@@ -102,7 +104,8 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
 
 std::string mass_flow_csv(const std::vector<dem::scene::MassFlowSample>& log) {
   std::ostringstream csv;
-  csv << "# time_s,fed_kg,out_kg,lost_kg,holdup_kg,particles,slice_axial_flow_kg_s\n";
+  // One header line of column names (pandas.read_csv reads it as is); masses are cumulative.
+  csv << "time_s,fed_cumulative_kg,out_cumulative_kg,lost_cumulative_kg,holdup_kg,free_particles,slice_axial_flow_kg_s\n";
   for (const auto& s : log)
     csv << s.time << ',' << s.fed << ',' << s.out << ',' << s.lost << ',' << s.holdup << ',' << s.particles << ','
         << s.axial_flow << '\n';
@@ -113,18 +116,20 @@ std::string mass_flow_csv(const std::vector<dem::scene::MassFlowSample>& log) {
 
 void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf, const config::DemCase& dc, const io::DemRunResult& r) {
   io::write_json_file(out_dir + "/summary.json", summary(cf, dc, r));
-  io::write_dem_h5(out_dir, cf.path, cf.resolved_yaml, dc.scene, r);
+  io::write_dem_h5(out_dir, case_provenance(cf.path, cf.resolved_yaml), dc.scene, r);
   io::write_text_atomically(out_dir + "/mass_flow.csv", mass_flow_csv(r.mass_flow));
 
   const double window = dc.run.flow_window_turns * dem::scene::turn_period(dc.scene);
   const auto [fed_rate, out_rate] = dem::scene::window_flows(r.mass_flow, window);
   const double rate = r.wall_time > 0.0 ? r.particle_steps / r.wall_time : 0.0;
-  std::printf("holdup %.4f kg (%lld particles), inlet %.3f g/s, outlet %.3f g/s over the last %.2f s\n", r.holdup_kg,
-              static_cast<long long>(r.free_particles), fed_rate * 1e3, out_rate * 1e3, window);
-  std::printf("%.3g particle-steps/s, wall time %.1f s; wrote %s/summary.json\n", rate, r.wall_time, out_dir.c_str());
+  std::printf("holdup %.4f kg (%lld free particles); %.3g particle-steps/s, wall time %.1f s\n", r.holdup_kg,
+              static_cast<long long>(r.free_particles), rate, r.wall_time);
   if (r.fields.snapshots > 0)
     std::printf("film thickness %.2f +- %.2f d over %zu turns\n", r.fields.mean_thickness.mean_d,
                 r.fields.mean_thickness.std_d, r.fields.turns);
+  std::printf("wrote %s/{summary.json,dem.h5,dem.xmf,drum.xmf,mass_flow.csv}\n", out_dir.c_str());
+  if (dc.scene.feeder.enabled && !dc.scene.slice.enabled)
+    std::printf("steady state: %s\n", dem_flow_verdict(out_rate, fed_rate, window, dc.run.steady_tolerance).c_str());
 }
 
 }  // namespace centrec::runs
