@@ -19,7 +19,7 @@ ProgressMeter::ProgressMeter(double total, double interval)
 double ProgressMeter::elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
 
 void ProgressMeter::phase(const std::string& name, const std::string& what) {
-  if (tty_ && !phase_.empty()) std::fprintf(stderr, "\n");
+  finish();
   phase_ = name;
   std::fprintf(stderr, "%s: %s\n", name.c_str(), what.c_str());
   std::fflush(stderr);
@@ -44,13 +44,15 @@ void ProgressMeter::update(double done, double turns, double particle_steps, boo
   const double rate = wall > 0.0 ? particle_steps / wall : 0.0;
   const std::string extra = status ? status() : std::string();
   std::fprintf(stderr, "%s  %-8s %5.1f %%  t = %.3f of %.3f s  turn %.1f%s%s  ETA %.0f s  %.3g particle-steps/s%s",
-               tty_ ? "\r" : "", phase_.c_str(), 100.0 * frac, done, total_, turns, extra.empty() ? "" : "  ",
-               extra.c_str(), eta, rate, tty_ ? "   " : "\n");
+               tty_ ? "\r\033[K" : "", phase_.c_str(), 100.0 * frac, done, total_, turns, extra.empty() ? "" : "  ",
+               extra.c_str(), eta, rate, tty_ ? "" : "\n");
   std::fflush(stderr);
+  line_open_ = tty_;
 }
 
 void ProgressMeter::finish() {
-  if (tty_) std::fprintf(stderr, "\n");
+  if (line_open_) std::fprintf(stderr, "\n");
+  line_open_ = false;
 }
 
 }  // namespace centrec::runs

@@ -27,6 +27,7 @@ class ProgressMeter {
   using Clock = std::chrono::steady_clock;
   double total_, interval_;
   bool tty_, fixed_interval_;
+  bool line_open_ = false;  // a terminal line being updated in place, not yet ended
   int next_decile_ = 1;
   double last_done_ = -1.0;  // simulated time of the last line printed
   std::string phase_;
