@@ -47,6 +47,7 @@ def fig2_mass_flow(f, out, written):
     window = sampling_window(f)
     if window:
         ax.axvspan(*window, color="C2", alpha=0.12, label="sampled turns")
+    ax.set_xlim(left=0)
     ax.set_ylim(bottom=0)
     ax.set_title("Mass flow, trailing one-turn average (paper Fig 2)")
     pc.style(ax, "time (s)", "mass flow (g/s)")
@@ -99,11 +100,15 @@ def solid_fraction(f, out, written):
     w = fl["wall_distance_d"][()]
     sm, ss = fl["solid_fraction_mean"][()], fl["solid_fraction_std"][()]
     fig, ax = plt.subplots(figsize=(7, 4))
+    empty = []
     for k, name in enumerate(["stationary zone", "moving zone"]):
         ok = np.isfinite(sm[k])
-        ax.errorbar(w[ok], sm[k][ok], yerr=ss[k][ok], marker="o", ms=3, capsize=2, label=name)
+        if ok.any():
+            ax.errorbar(w[ok], sm[k][ok], yerr=ss[k][ok], marker="o", ms=3, capsize=2, color="C%d" % k, label=name)
+        else:
+            empty.append(name)
     ax.set_ylim(0, 0.75)
-    ax.set_title("Solid fraction across the film")
+    ax.set_title("Solid fraction across the film" + ("" if not empty else " (no %s detected)" % " or ".join(empty)))
     pc.style(ax, "wall distance (d)", "solid fraction")
     pc.save(fig, out, "solid_fraction.png", written)
 

@@ -37,18 +37,23 @@ def film(f, out, written):
                     capsize=2, label="DEM sections (eqs 4-7), +- std over turns")
     else:
         ax.plot(z, t / d, "o-", ms=3, label="film thickness")
-    ax.set_title("film thickness, L = %.3g m" % L)
-    style(ax, "z (m)", "t / d")
+    ax.set_title("Film thickness on the receiver, L = %.3g m" % L)
+    ax.set_ylim(bottom=0)
+    style(ax, "axial position z (m)", "film thickness (d)")
     eta = fl["eta"][()] / d
     i = len(z) // 2
     ne = len(eta)
     phi, D = fl["phi"][()].reshape(-1, ne)[i], fl["D"][()].reshape(-1, ne)[i]
     ax2.plot(eta, phi, "o-", ms=3, label="solid fraction phi")
     ax2.axvline(t[i] / d, color="k", ls=":", label="film surface t")
-    style(ax2, "wall distance eta / d", "phi")
+    ax2.set_title("Across the film at z = %.3g m (mid-length)" % z[i])
+    style(ax2, "wall distance eta (d)", "solid fraction phi", legend=False)
     ax3 = ax2.twinx()
-    ax3.plot(eta, D * 1e6, "s--", ms=3, color="C3", label="dispersion D")
-    ax3.set_ylabel("D (mm2/s)", color="C3")
+    ax3.plot(eta, D * 1e6, "s--", ms=3, color="C3", label="dispersion D (right axis)")
+    ax3.set_ylabel("dispersion D (mm2/s)", color="C3")
+    h2, l2 = ax2.get_legend_handles_labels()
+    h3, l3 = ax3.get_legend_handles_labels()
+    ax2.legend(h2 + h3, l2 + l3, loc="center right")
     save(fig, out, "run_film.png", written)
 
 
@@ -65,8 +70,8 @@ def velocity(f, out, written):
         m = eta <= t[i] / d + 1e-9
         ax.plot(eta[m], u[i, m], "o-", ms=3, label="z = %.3g m" % z[i])
         ax.fill_between(eta[m], u[i, m] - us[i, m], u[i, m] + us[i, m], alpha=0.15)
-    ax.set_title("coupled axial velocity (turn average, mass flux %.4g kg/s)" % fl.attrs["mdot"])
-    style(ax, "wall distance eta / d", "u (m/s)")
+    ax.set_title("Coupled axial velocity on the receiver (turn average, %.4g kg/s)" % fl.attrs["mdot"])
+    style(ax, "wall distance eta (d)", "axial velocity u (m/s)")
     save(fig, out, "run_velocity.png", written)
 
 
@@ -100,10 +105,18 @@ def losses(summary, out, written):
 
 
 def dem_folder(args, summary):
+    """--dem, else summary.json's dem.dir (relative to where the run was started), else the
+    default cache beside the run folder (DIR/../dem-cache/<key>)."""
     if args.dem:
         return args.dem
     d = summary.get("dem", {}).get("dir")
-    return d if d and os.path.isfile(os.path.join(d, "dem.h5")) else None
+    if not d:
+        return None  # the film did not come from a DEM
+    for cand in (d, os.path.join(args.folder, os.pardir, "dem-cache", os.path.basename(d))):
+        if os.path.isfile(os.path.join(cand, "dem.h5")):
+            return cand
+    print(f"no dem.h5 in {d} (summary.json dem.dir): Figs 2, 3 and 6 not drawn; give --dem DEM_DIR")
+    return None
 
 
 def main(argv=None):

@@ -44,10 +44,15 @@ def keff(f, out, written=None):
     k = f["steady/keff"]
     z = k["z"][()]
     fig, ax = plt.subplots(figsize=(8, 4))
-    for name in ("k_eff", "bed_conduction", "radiation", "mixing"):
-        ax.plot(z, k[name][()], label=name)
-    ax.set_title("effective wall-normal conductivity of the moving film (series value)")
-    style(ax, "z (m)", "W/(m K)")
+    top = 0.0
+    for name, label, lw in (("k_eff", "k_eff (series value)", 2.2), ("bed_conduction", "bed conduction", 1.3),
+                            ("radiation", "radiation", 1.3), ("mixing", "mixing", 1.3)):
+        ax.plot(z, k[name][()], label=label, lw=lw)
+        top = max(top, float(np.nanmax(k[name][()])))
+    ax.set_ylim(0, 1.3 * top)
+    ax.set_title("Effective wall-normal conductivity of the moving film and its parts")
+    style(ax, "axial position z (m)", "conductivity (W/(m K))", legend=False)
+    ax.legend(loc="upper center", ncol=4)
     save(fig, out, "thermal_keff.png", written)
 
 
