@@ -157,6 +157,8 @@ def do_files(a):
     with h5py.File(files["results"], "r") as f:
         check(f["steady/T"].dims[0][0].name == "/grid/z", "results.h5: T has no z scale")
         check("thermal:" in f.attrs["resolved_config"], "results.h5: resolved_config lacks the thermal section")
+    with h5py.File(files["film"], "r") as f:
+        check(f["film/u"].dims[1][0].name == "/film/eta", "film.h5: u has no eta scale")
     path = os.path.join(a.work, "dem", "mass_flow.csv")
     with open(path) as fh:
         first = fh.readline()
