@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 extern char** environ;
@@ -14,7 +15,11 @@ namespace centrec::cli {
 
 namespace {
 
-const char* kPython = "/usr/bin/python3";
+// The system python (Debian's matplotlib, h5py and numpy live there), or CENTREC_PYTHON.
+std::string python() {
+  const char* env = std::getenv("CENTREC_PYTHON");
+  return env && *env ? env : "/usr/bin/python3";
+}
 
 // Exit status of argv[0] run with argv (no shell; stdout and stderr inherited, or sent to
 // /dev/null when quiet), -1 if it could not start.
@@ -53,16 +58,17 @@ std::string plot_script_dir() {
 
 bool run_plot_script(const std::string& who, const std::string& script, const std::vector<std::string>& args) {
   const char* install = "Debian: apt-get install python3-matplotlib python3-h5py python3-numpy, or ./setup.sh";
-  if (access(kPython, X_OK) != 0) {
-    std::fprintf(stderr, "%s: no figures: %s not found (%s); the results are written\n", who.c_str(), kPython, install);
+  const std::string py = python();
+  if (access(py.c_str(), X_OK) != 0) {
+    std::fprintf(stderr, "%s: no figures: %s not found (%s); the results are written\n", who.c_str(), py.c_str(), install);
     return false;
   }
-  if (spawn_and_wait({kPython, "-c", "import matplotlib, h5py, numpy"}, true) != 0) {
+  if (spawn_and_wait({py, "-c", "import matplotlib, h5py, numpy"}, true) != 0) {
     std::fprintf(stderr, "%s: no figures: %s lacks matplotlib, h5py or numpy (%s); the results are written\n",
-                 who.c_str(), kPython, install);
+                 who.c_str(), py.c_str(), install);
     return false;
   }
-  std::vector<std::string> argv = {kPython, plot_script_dir() + "/" + script};
+  std::vector<std::string> argv = {py, plot_script_dir() + "/" + script};
   argv.insert(argv.end(), args.begin(), args.end());
   const int rc = spawn_and_wait(argv);
   if (rc != 0) {

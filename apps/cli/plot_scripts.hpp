@@ -1,8 +1,9 @@
 #pragma once
 // The figures of a run: the commands call the plot scripts (apps/plot_*.py, installed to
 // share/centrec/scripts) with the system python (/usr/bin/python3 with matplotlib, h5py and
-// numpy, which ./setup.sh installs). Plotting never fails a run: without python or its
-// packages the command says so on stderr and goes on (docs/outputs.md).
+// numpy, which ./setup.sh installs; CENTREC_PYTHON names another interpreter). Plotting never
+// fails a run: without python or its packages the command says so on stderr and goes on
+// (docs/outputs.md).
 #include <string>
 #include <vector>
 

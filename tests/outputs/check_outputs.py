@@ -68,6 +68,17 @@ def do_run(a):
                        os.path.join(a.work, "run.log"))
     check("thermal:" in err, "`centrec run` names no thermal phase")
     check("DEM steady state:" in out, "`centrec run` prints no DEM steady-state verdict")
+    # Without python, or without its plotting packages, the run says so and still succeeds
+    # (the DEM comes from the cache: seconds).
+    for python, says in (("/nonexistent/python3", "not found"), ("/bin/false", "lacks matplotlib")):
+        env = dict(os.environ, CENTREC_PYTHON=python)
+        folder = os.path.join(a.work, "run_without_python")
+        p = subprocess.run([a.centrec, "run", os.path.join(a.source, "tests/coupling/small_coupled.yaml"), "--out", folder,
+                            "--cache", os.path.join(a.work, "cache")], capture_output=True, text=True, env=env)
+        print(f"CENTREC_PYTHON={python}: exit {p.returncode}; " + p.stderr.strip().splitlines()[-1])
+        check(p.returncode == 0, f"`centrec run` with CENTREC_PYTHON={python} failed: {p.stderr[-1000:]}")
+        check("no figures: " in p.stderr and says in p.stderr, f"`centrec run` without plotting says: {p.stderr[-500:]}")
+        check(os.path.isfile(os.path.join(folder, "results.h5")), "`centrec run` without plotting wrote no results.h5")
 
 
 DEM_PNGS = ["fig2_mass_flow.png", "fig3_film_thickness.png", "fig6_velocity_profiles.png", "solid_fraction.png"]
