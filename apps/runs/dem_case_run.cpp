@@ -39,10 +39,13 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
                                   const std::optional<io::RunCheckpoint>& ck) {
   io::ensure_directory(out_dir);
 
+  std::fprintf(stderr, "centrec dem: %s\nset-up: %s\n", cf.path.c_str(),
+               ck ? ("restoring the checkpoint in " + out_dir).c_str()
+                  : "building the drum, its rough wall and the initial film");
   dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(dc.scene);
   auto& sim = scene.simulation();
-  std::fprintf(stderr, "centrec dem: %s%s\n  %s\n  dt = %.3g s, %lld glued + %lld free particles, %d thread(s)\n",
-               cf.path.c_str(), ck ? (" resumed at t = " + std::to_string(sim.time()) + " s (" + ck->phase + ")").c_str() : "",
+  std::fprintf(stderr, "%s  %s\n  dt = %.3g s, %lld glued + %lld free particles, %d thread(s)\n",
+               ck ? ("  resumed at t = " + std::to_string(sim.time()) + " s (" + ck->phase + ")\n").c_str() : "",
                sim.time_step_advice().report().c_str(), sim.dt(), static_cast<long long>(scene.glued_particles()),
                static_cast<long long>(scene.free_particles()), sim.threads());
 
