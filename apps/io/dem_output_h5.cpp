@@ -231,6 +231,7 @@ void write_dem_h5(const std::string& dir, const Provenance& provenance, const de
   write_mass_flow(f, run.mass_flow);
   write_film(f, run.fields);
   f.create_group("/snapshots");
+  f.set_attribute("/snapshots", "snapshot_stride", static_cast<double>(run.snapshot_stride));
   for (const auto& s : run.snapshots) write_snapshot(f, s);
   const std::string drum = write_drum(f, scene);
   f.commit();

@@ -79,6 +79,8 @@ io::DemRunResult run_dem_on_liggghts(const config::CaseFile& cf, const config::D
 
   dem::scene::SceneSampler sampler(dc.scene, dc.sampling.sampler);
   io::DemRunResult r;
+  r.snapshot_stride = io::snapshot_stride(static_cast<double>(plan.sampled_turns) * plan.snapshots_per_turn,
+                                          static_cast<double>(plan.initial_free + plan.glued));
   std::size_t fed_dumps = 0;  // dumps taken into the sampler (the first, at sampling start, is kept only)
   auto take_dumps = [&](bool finished) {
     const auto files = list_dump_files(dir + "/" + plan.dump_dir, "film_", ".dump");
@@ -90,7 +92,9 @@ io::DemRunResult run_dem_on_liggghts(const config::CaseFile& cf, const config::D
       const std::int64_t index = (step - sampling_start) / plan.dump_every;  // 0 = sampling start
       char name[32];
       std::snprintf(name, sizeof name, "t%.6f", s.time);
-      if (index >= 0) r.snapshots.push_back({name, s, {}});  // the dumps hold the free particles only
+      // Every stride-th dump from the sampling start, and the last (free particles only).
+      if (index >= 0 && (index % r.snapshot_stride == 0 || step == sampling_start + plan.sampling_steps))
+        r.snapshots.push_back({name, s, {}});
       if (index > 0) {
         sampler.add_snapshot(std::move(s));
         if (index % plan.snapshots_per_turn == 0) sampler.end_turn();

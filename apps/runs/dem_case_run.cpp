@@ -124,19 +124,22 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   } else {
     keep(dem::scene::take_snapshot(sim), true);  // the film as sampling starts
   }
-  // One turn as SceneSampler::sample_turns does it, keeping each snapshot.
+  const int turns = static_cast<int>(std::floor(dc.sampling.turns + 1e-9));
+  const int per_turn = sampler.spec().snapshots_per_turn;
+  const int stride = io::snapshot_stride(turns * per_turn, static_cast<double>(sim.size()));
+  int taken = sampled * per_turn;  // sampled snapshots so far, counted from the start of sampling
+  // One turn as SceneSampler::sample_turns does it, keeping every stride-th snapshot.
   auto sample_turn = [&] {
-    for (int k = 0; k < sampler.spec().snapshots_per_turn; ++k) {
-      advance([&] { scene.advance(period / sampler.spec().snapshots_per_turn); });
+    for (int k = 0; k < per_turn; ++k) {
+      advance([&] { scene.advance(period / per_turn); });
       dem::scene::SnapshotArrays s = dem::scene::take_snapshot(sim);
-      keep(s, true);
+      if (++taken % stride == 0) keep(s, true);
       sampler.add_snapshot(std::move(s));
     }
     sampler.end_turn();
   };
-  const int turns = static_cast<int>(std::floor(dc.sampling.turns + 1e-9));
   if (sampled < turns)
-    progress.phase("sampling", std::to_string(turns) + " turn(s) of " + std::to_string(sampler.spec().snapshots_per_turn) +
+    progress.phase("sampling", std::to_string(turns) + " turn(s) of " + std::to_string(per_turn) +
                                    " snapshots each for the film fields (thickness, velocity profiles, solid fraction)");
   while (sampled < turns) {
     sample_turn();
@@ -169,6 +172,7 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   r.wall_time = wall;
   r.fields = sampler.fields();
   r.snapshots = std::move(snapshots);
+  r.snapshot_stride = stride;
   return r;
 }
 
