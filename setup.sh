@@ -1,19 +1,27 @@
 #!/usr/bin/env bash
 # One set-up for both README commands: install the Debian packages centrec needs
 # (only those missing), then configure and build in Release into ./build.
-# Usage: ./setup.sh [extra cmake args...]   e.g. ./setup.sh -DCENTREC_SANITIZE=ON
+# Usage: ./setup.sh [--with-liggghts] [extra cmake args...]   e.g. ./setup.sh -DCENTREC_SANITIZE=ON
+#   --with-liggghts (or CENTREC_WITH_LIGGGHTS=1): also install LIGGGHTS 3.8 and Open MPI, for
+#   `centrec dem --engine liggghts` and the engine cross-checks; not needed otherwise.
 # Environment: BUILD_DIR (default build), JOBS (default: all cores).
 set -euo pipefail
 cd "$(dirname "$0")"
+
+WITH_LIGGGHTS="${CENTREC_WITH_LIGGGHTS:-0}"
+CMAKE_ARGS=()
+for a in "$@"; do
+  if [ "$a" = "--with-liggghts" ]; then WITH_LIGGGHTS=1; else CMAKE_ARGS+=("$a"); fi
+done
 
 PACKAGES=(
   build-essential cmake pkg-config git
   libeigen3-dev libsundials-dev libhdf5-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libomp-dev
-  python3 python3-matplotlib python3-h5py python3-numpy python3-yaml
+  python3 python3-matplotlib python3-h5py python3-numpy python3-yaml python3-meshio
   nlohmann-json3-dev libcli11-dev
-  liggghts openmpi-bin
 )
+if [ "$WITH_LIGGGHTS" = "1" ]; then PACKAGES+=(liggghts openmpi-bin); fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -31,5 +39,5 @@ fi
 
 BUILD_DIR="${BUILD_DIR:-build}"
 JOBS="${JOBS:-$(nproc)}"
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release ${CMAKE_ARGS[@]+"${CMAKE_ARGS[@]}"} >/dev/null
 cmake --build "$BUILD_DIR" -j "$JOBS"

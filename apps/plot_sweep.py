@@ -1,32 +1,34 @@
 #!/usr/bin/python3
-"""Charts of a `centrec sweep`: the operating map.
+"""Charts of a `centrec sweep` output folder (DIR/sweep.json): the operating map.
 
-Usage: /usr/bin/python3 apps/plot_sweep.py OUT_DIR
-Reads OUT_DIR/sweep.json and writes
-  OUT_DIR/sweep_map.png         outlet temperature, efficiency, k_eff and film thickness
-                                against mass flow, one line per rotational speed
-  OUT_DIR/sweep_keff_parts.png  k_eff split into bed conduction, radiation and mixing per point
+  sweep_map.png         outlet temperature, efficiency, k_eff and film thickness
+                        against mass flow, one line per rotational speed
+  sweep_keff_parts.png  k_eff split into bed conduction, radiation and mixing per point
+
 Points whose DEM had not reached steady flow over the last window (`dem_flow` in sweep.json
 and the status in sweep.csv: `filling`, outlet below 80 % of the feed, or `draining`, above
 125 %) are drawn hollow: the flow the thermal model carries is then not the feed.
-Uses Debian's python3-matplotlib (hence /usr/bin/python3).
+`centrec sweep` calls this script; by hand: /usr/bin/python3 apps/plot_sweep.py DIR
 """
 import json
 import os
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_common as pc  # noqa: E402
+from plot_common import plt  # noqa: E402
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 
-
-def main(out):
-    with open(os.path.join(out, "sweep.json")) as fh:
+def main(argv=None):
+    p = pc.parser(__doc__, "output folder of `centrec sweep` (holds sweep.json)")
+    args = p.parse_args(argv)
+    path = pc.input_file(p, args.folder, "sweep.json", "`centrec sweep`")
+    out = pc.out_dir(args)
+    with open(path) as fh:
         sweep = json.load(fh)
     pts = [p for p in sweep["points"] if p.get("status") == 0 and "T_out_K" in p]
     if not pts:
-        sys.exit("no successful sweep point in %s" % out)
+        sys.exit("no successful sweep point in %s" % path)
     for p in pts:
         p["steady"] = p["dem_flow_steady"]  # decided by centrec sweep (cmd_sweep.cpp)
     speeds = sorted({p["speed_rpm"] for p in pts})
@@ -46,13 +48,12 @@ def main(out):
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
         ax.legend()
-    fig.suptitle("operating map: %s (hollow: DEM flow not steady, outlet < 80 %% or > 125 %% of feed)" % sweep["case"])
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "sweep_map.png"), dpi=120)
-    plt.close(fig)
+    fig.suptitle("operating map: %s (hollow: DEM flow not steady within dem.run.steady_tolerance)" % sweep["case"])
+    written = []
+    pc.save(fig, out, "sweep_map.png", written)
 
     fig, ax = plt.subplots(figsize=(10, 4.5))
-    names = ["%.4g rpm\n%.4g kg/s%s" % (p["speed_rpm"], p["mass_flow_kg_s"], "" if p["steady"] else "\n(%s)" % p.get("dem_flow", "filling"))
+    names = ["%.4g rpm\n%.4g kg/s%s" % (p["speed_rpm"], p["mass_flow_kg_s"], "" if p["steady"] else "\n(not steady)")
              for p in pts]
     bottom = [0.0] * len(pts)
     for part in ("bed_conduction", "radiation", "mixing"):
@@ -64,12 +65,9 @@ def main(out):
     ax.set_title("parts of k_eff over the operating window")
     ax.legend()
     ax.grid(alpha=0.3, axis="y")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "sweep_keff_parts.png"), dpi=120)
-    plt.close(fig)
+    pc.save(fig, out, "sweep_keff_parts.png", written)
+    pc.report(written)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    main(sys.argv[1])
+    main()

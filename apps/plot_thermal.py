@@ -1,21 +1,20 @@
 #!/usr/bin/python3
-"""Plots of a `centrec thermal` run (docs/outputs.md).
+"""Figures of a `centrec thermal` output folder (DIR/thermal.h5, docs/outputs.md):
 
-Usage: /usr/bin/python3 apps/plot_thermal.py OUT_DIR
-Reads OUT_DIR/thermal.h5 and writes
-  OUT_DIR/thermal_T_map.png     steady temperature over (z, eta), with the surface temperature
-  OUT_DIR/thermal_keff.png      k_eff per axial section and its bed / radiation / mixing parts
-  OUT_DIR/thermal_T_out.png     T_out(t) and the powers over time (transient runs only)
-Uses Debian's python3-matplotlib and python3-h5py (hence /usr/bin/python3).
+  thermal_T_map.png     steady film temperature over (z, wall distance), surface and wall temperature
+  thermal_keff.png      k_eff per axial section and its bed / radiation / mixing parts
+  thermal_T_out.png     T_out(t) and the powers over time (transient runs only)
+
+Run with the system python: /usr/bin/python3 apps/plot_thermal.py DIR
 """
 import os
 import sys
 
-import h5py
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_common as pc  # noqa: E402
+from plot_common import plt, save, style  # noqa: E402,F401
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import h5py  # noqa: E402
 import numpy as np  # noqa: E402
 
 
@@ -24,20 +23,7 @@ def units(ds):
     return u.decode() if isinstance(u, bytes) else u
 
 
-def style(ax, xlabel, ylabel):
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.legend()
-    ax.grid(alpha=0.3)
-
-
-def save(fig, out, name):
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, name), dpi=120)
-    plt.close(fig)
-
-
-def temperature_map(f, out):
+def temperature_map(f, out, written=None):
     z = f["grid/z"][()]
     eta = f["grid/eta"][()]
     T = f["steady/T"][()]
@@ -51,21 +37,26 @@ def temperature_map(f, out):
     ax2.plot(z, Ts - 273.15, label="surface")
     ax2.plot(z, T[:, 0] - 273.15, label="wall cell")
     style(ax2, "axial position z (%s)" % units(f["grid/z"]), "T (C)")
-    save(fig, out, "thermal_T_map.png")
+    save(fig, out, "thermal_T_map.png", written)
 
 
-def keff(f, out):
+def keff(f, out, written=None):
     k = f["steady/keff"]
     z = k["z"][()]
     fig, ax = plt.subplots(figsize=(8, 4))
-    for name in ("k_eff", "bed_conduction", "radiation", "mixing"):
-        ax.plot(z, k[name][()], label=name)
-    ax.set_title("effective wall-normal conductivity of the moving film (series value)")
-    style(ax, "z (m)", "W/(m K)")
-    save(fig, out, "thermal_keff.png")
+    top = 0.0
+    for name, label, lw in (("k_eff", "k_eff (series value)", 2.2), ("bed_conduction", "bed conduction", 1.3),
+                            ("radiation", "radiation", 1.3), ("mixing", "mixing", 1.3)):
+        ax.plot(z, k[name][()], label=label, lw=lw)
+        top = max(top, float(np.nanmax(k[name][()])))
+    ax.set_ylim(0, 1.3 * top)
+    ax.set_title("Effective wall-normal conductivity of the moving film and its parts")
+    style(ax, "axial position z (m)", "conductivity (W/(m K))", legend=False)
+    ax.legend(loc="upper center", ncol=4)
+    save(fig, out, "thermal_keff.png", written)
 
 
-def transient(f, out):
+def transient(f, out, written=None):
     tr = f["transient"]
     t = tr["t"][()]
     fig, (ax, ax2) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
@@ -75,18 +66,22 @@ def transient(f, out):
     for name in ("absorbed", "emitted", "carried", "storage_rate"):
         ax2.plot(t, tr[name][()] / 1e6, label=name)
     style(ax2, "t (s)", "power (MW)")
-    save(fig, out, "thermal_T_out.png")
+    save(fig, out, "thermal_T_out.png", written)
 
 
-def main(out):
-    with h5py.File(os.path.join(out, "thermal.h5"), "r") as f:
-        temperature_map(f, out)
-        keff(f, out)
+def main(argv=None):
+    p = pc.parser(__doc__, "output folder of `centrec thermal` (holds thermal.h5)")
+    args = p.parse_args(argv)
+    path = pc.input_file(p, args.folder, "thermal.h5", "`centrec thermal`")
+    out = pc.out_dir(args)
+    written = []
+    with h5py.File(path, "r") as f:
+        temperature_map(f, out, written)
+        keff(f, out, written)
         if "transient" in f:
-            transient(f, out)
+            transient(f, out, written)
+    pc.report(written)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    main(sys.argv[1])
+    main()

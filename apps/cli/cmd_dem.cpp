@@ -6,6 +6,7 @@
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/dem_engine_options.hpp"
+#include "cli/plot_scripts.hpp"
 #include "config/case_file.hpp"
 #include "io/atomic_write.hpp"
 #include "io/checkpoint_h5.hpp"
@@ -20,6 +21,7 @@ namespace {
 
 struct DemOptions {
   std::string case_path, out_dir = "out/dem", resume_dir;
+  bool no_plots = false;
   int threads = -1;         // -1 = from the case
   double duration = -1.0;   // -1 = from the case
   DemEngineOptions engine;
@@ -29,12 +31,15 @@ void print_dem_help() {
   std::printf(
       "usage: centrec dem CASE.yaml [--out DIR] [--threads N] [--duration SECONDS]\n"
       "                  [--engine centrec|liggghts] [--ranks N] [--mpirun CMD] [--liggghts EXE]\n"
-      "                  [--wall-rolling-model relative|liggghts]\n"
+      "                  [--wall-rolling-model relative|liggghts] [--no-plots]\n"
       "       centrec dem --resume DIR [--threads N]\n\n"
       "Runs the DEM of the CentRec drum (or periodic slice) described by the case's\n"
       "`dem:` section and writes DIR/summary.json (headline figures and the resolved\n"
       "configuration), DIR/dem.h5 (mass flows, averaged film fields, particle snapshots;\n"
-      "units as attributes), DIR/dem.xmf (open in ParaView) and DIR/mass_flow.csv.\n"
+      "units as attributes), DIR/dem.xmf and DIR/drum.xmf (open in ParaView), DIR/mass_flow.csv\n"
+      "and the paper's figures (apps/plot_dem.py): fig2_mass_flow.png (outlet flow vs time),\n"
+      "fig3_film_thickness.png (thickness along z), fig6_velocity_profiles.png (the nine\n"
+      "profiles) and solid_fraction.png (--no-plots: none).\n"
       "--threads and --duration override run.threads and run.duration.\n"
       "--engine liggghts runs the same case on LIGGGHTS 3.8 (`mpirun -np N liggghts`, N = --ranks;\n"
       "--mpirun srun for a cluster launcher) in DIR/liggghts and reads its dumps into the same\n"
@@ -55,6 +60,7 @@ DemOptions parse(const Args& args) {
   app.add_option("--resume", o.resume_dir);
   app.add_option("--threads", o.threads);
   app.add_option("--duration", o.duration);
+  app.add_flag("--no-plots", o.no_plots);
   add_engine_options(app, o.engine);
   app.read(args);
   if (!o.resume_dir.empty()) {
@@ -99,6 +105,7 @@ int cmd_dem(const Args& args) {
   } else {
     runs::run_dem_case(cf, dc, opt.out_dir, runs::native_engine(ck));
   }
+  if (!opt.no_plots) run_plot_script("centrec dem", "plot_dem.py", {opt.out_dir});
   return 0;
 }
 

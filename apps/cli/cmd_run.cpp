@@ -4,12 +4,14 @@
 #include <stdexcept>
 
 #include "cli/command_line.hpp"
+#include "cli/plot_scripts.hpp"
 #include "cli/commands.hpp"
 #include "config/case_file.hpp"
 #include "io/atomic_write.hpp"
 #include "io/summary_json.hpp"
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
+#include "runs/provenance.hpp"
 #include "runs/thermal_output.hpp"
 
 namespace centrec::cli {
@@ -23,7 +25,7 @@ void print_run_help() {
       "(derived from `receiver:` by eqs 1-3 when receiver.dem_diameter_d is given), run until\n"
       "its flow is steady; its film as measured (full-circumference profiles per section, cut\n"
       "where the solid fraction falls below 0.1) handed to the thermal film, its flow checked\n"
-      "against the DEM's measured flow (flux closure, 5 %), scaled up to the receiver when the\n"
+      "against the DEM's measured flow (flux closure, 5 %%), scaled up to the receiver when the\n"
       "case has one, the case's mass flow imposed by one velocity factor, then the thermal\n"
       "model of `thermal:` (docs/coupling.md).\n"
       "Refused unless allowed: a DEM drum below D/d = 60, the scale-down laws' validity\n"
@@ -36,8 +38,11 @@ void print_run_help() {
       "the DEM drum's, without a receiver); `centrec sweep` uses them.\n\n"
       "Writes DIR/summary.json (outlet temperature, efficiency, k_eff and its parts, film\n"
       "thickness, mdot, scaling, wall time per stage), DIR/results.h5 (thermal fields, /film,\n"
-      "/coupling), DIR/film.h5 (the film field; reusable as `film: {file: DIR/film.h5}`) and\n"
-      "the PNGs of apps/plot_run.py (film, velocity, temperature map, k_eff along z).\n");
+      "/coupling), DIR/results.xmf (the temperature field for ParaView), DIR/film.h5 (the film\n"
+      "field; reusable as `film: {file: DIR/film.h5}`) and the figures of apps/plot_run.py:\n"
+      "the paper's Figs 2, 3 and 6 from the DEM (fig2_mass_flow.png, fig3_film_thickness.png,\n"
+      "fig6_velocity_profiles.png), the film temperature field (thermal_T_map.png), the power\n"
+      "balance (losses.png), k_eff, film and velocity (--no-plots: none).\n");
 }
 
 std::string parent_of(const std::string& dir) {
@@ -74,7 +79,7 @@ int cmd_run(const Args& args) {
   const config::CaseFile cf = config::read_case_file(case_path);
   io::ensure_directory(out_dir);
   const runs::CoupledRun r = runs::run_coupled_case(cf, o);
-  runs::write_coupled_h5(out_dir, r);
+  runs::write_coupled_h5(out_dir, r, runs::case_provenance(cf.path, cf.resolved_yaml));
   nlohmann::json s = runs::coupled_summary(r);
   s["resolved_config"] = cf.resolved_yaml;
   io::write_json_file(out_dir + "/summary.json", s);
@@ -84,10 +89,10 @@ int cmd_run(const Args& args) {
   std::printf("centrec run %s\n", case_path.c_str());
   if (r.film_from_dem) {
     const auto& sd = r.dem.scene;
-    std::printf("  DEM %s (%s): %s D = %.4g m (D/d %.0f), %.2f rpm; %s\n", r.dem_cached ? "from cache" : "run",
+    std::printf("  DEM %s (%s): %s D = %.4g m (D/d %.0f), %.2f rpm\n", r.dem_cached ? "from cache" : "run",
                 r.dem_dir.c_str(), sd.slice.enabled ? "slice of the drum" : "drum", sd.drum.diameter,
-                sd.drum.diameter / sd.particle.diameter, coupling::rad_per_s_to_rpm(sd.drum.omega),
-                r.averages.steady_text.c_str());
+                sd.drum.diameter / sd.particle.diameter, coupling::rad_per_s_to_rpm(sd.drum.omega));
+    std::printf("  DEM steady state: %s\n", r.averages.steady_text.c_str());
     std::printf("  film as measured: %.2f d thick where phi >= %.2g (%.1f-%.1f %% of the DEM's flow inside); "
                 "eqs 4-7 thickness %.2f d; moving zone %.0f %% of the circumference\n",
                 s["film"]["mean_thickness_d"].get<double>(), r.cut.phi_cut,
@@ -111,12 +116,12 @@ int cmd_run(const Args& args) {
   runs::print_receiver_report(r.thermal, b);
   std::printf("  k_eff %.4g W/(m K) = bed %.4g + radiation %.4g + mixing %.4g\n", k["k_eff"].get<double>(),
               k["bed_conduction"].get<double>(), k["radiation"].get<double>(), k["mixing"].get<double>());
-  std::printf("  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote %s/{summary.json,results.h5,film.h5}\n",
+  std::printf("  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote %s/{summary.json,results.h5,results.xmf,film.h5}\n",
               r.dem_seconds, r.mapping_seconds, r.thermal_seconds, out_dir.c_str());
   if (plots) {
-    const std::string cmd = "/usr/bin/python3 " CENTREC_PLOT_DIR "/plot_run.py '" + out_dir + "'";
-    if (std::system(cmd.c_str()) != 0)
-      std::fprintf(stderr, "centrec run: plotting failed (needs python3-matplotlib, python3-h5py): %s\n", cmd.c_str());
+    std::vector<std::string> plot_args = {out_dir};
+    if (r.film_from_dem) plot_args.insert(plot_args.end(), {"--dem", r.dem_dir});
+    run_plot_script("centrec run", "plot_run.py", plot_args);
   }
   return 0;
 }

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "cli/command_line.hpp"
+#include "cli/plot_scripts.hpp"
 #include "cli/commands.hpp"
 #include "config/case_file.hpp"
 #include "io/atomic_write.hpp"
@@ -179,8 +180,7 @@ int cmd_sweep(const Args& args) {
   std::printf("centrec sweep %s: %zu points, %d failed; wrote %s/sweep.csv and sweep.json\n", case_path.c_str(),
               points.size(), failed, out_dir.c_str());
   std::fputs(csv.str().c_str(), stdout);
-  const std::string cmd = "/usr/bin/python3 " CENTREC_PLOT_DIR "/plot_sweep.py '" + out_dir + "'";
-  if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "centrec sweep: plotting failed: %s\n", cmd.c_str());
+  run_plot_script("centrec sweep", "plot_sweep.py", {out_dir});
   return failed ? 1 : 0;
 }
 

@@ -22,7 +22,8 @@ int cmd_thermal(const Args& args) {
         "from a film-field HDF5 file `film.file` (group /film, docs/coupling.md).\n\n"
         "Writes DIR/thermal.h5 (T, k fields, local fluxes, k_eff per section, transient\n"
         "series; units as attributes; the resolved configuration and the code version as root\n"
-        "attributes) and DIR/summary.json (outlet mixing-cup temperature, efficiency, powers,\n"
+        "attributes), DIR/thermal.xmf (the temperature field on its grid, for ParaView) and\n"
+        "DIR/summary.json (outlet mixing-cup temperature, efficiency, powers,\n"
         "energy-balance residual, k_eff, solver statistics). Plot: apps/plot_thermal.py DIR.\n"
         "Examples: cases/thermal_*.yaml.\n");
     return wants_help(args) ? 0 : 2;

@@ -144,7 +144,7 @@ void visit_engine(IO& io, dem::SimulationState& s) {
   io.number(g, "dt", s.dt);
   integer(io, g, "next_id", s.next_id);
   io.number(g, "drum_angle", s.drum_angle);
-  records(io, g + "/materials", s.materials, 3, "Pa, 1, kg/m^3",
+  records(io, g + "/materials", s.materials, 3, "Pa, 1, kg/m3",
           [](const dem::Material& m, std::vector<double>& o) { o.insert(o.end(), {m.youngs_modulus, m.poisson_ratio, m.density}); },
           [](const double* p, dem::Material& m) { m = {p[0], p[1], p[2]}; });
   records(io, g + "/interactions", s.interactions, 3, "1",

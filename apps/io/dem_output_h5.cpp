@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "io/atomic_write.hpp"
-#include "io/code_version.hpp"
 #include "io/h5_file.hpp"
 
 namespace centrec::io {
@@ -31,6 +30,11 @@ void write_mass_flow(H5File& f, const std::vector<dem::scene::MassFlowSample>& l
   f.write("/mass_flow/holdup", hold, "kg");
   f.write("/mass_flow/particles", n, "1");
   f.write("/mass_flow/slice_axial_flow", axial, "kg/s");
+  f.set_attribute("/mass_flow", "description",
+                  "cumulative since t = 0: fed, out (through the outlet), lost (escaped elsewhere); holdup and "
+                  "particles: free particles in the drum; rates are differences over time");
+  for (const char* name : {"fed", "out", "lost", "holdup", "particles", "slice_axial_flow"})
+    f.attach_scale(std::string("/mass_flow/") + name, 0, "/mass_flow/time", "time");
 }
 
 // [rows][bins] profile bins -> mean, std and period-count matrices.
@@ -48,6 +52,7 @@ void write_profiles(H5File& f, const std::string& path, const std::vector<std::v
   f.write(path + "_mean", mean, {rows, cols}, units);
   f.write(path + "_std", sd, {rows, cols}, units);
   f.write(path + "_turns", periods, {rows, cols}, "1");
+  for (const char* part : {"_mean", "_std", "_turns"}) f.attach_scale(path + part, 1, "/film/wall_distance_d", "wall distance");
 }
 
 void write_film(H5File& f, const dem::scene::FilmFields& ff) {
@@ -88,8 +93,8 @@ void write_film(H5File& f, const dem::scene::FilmFields& ff) {
     ds.push_back(b.coefficient_std);
     dd.push_back(b.drift);
   }
-  f.write("/film/dispersion", dc, "m^2/s");
-  f.write("/film/dispersion_std", ds, "m^2/s");
+  f.write("/film/dispersion", dc, "m2/s");
+  f.write("/film/dispersion_std", ds, "m2/s");
   f.write("/film/dispersion_drift", dd, "m/s");
   f.set_attribute("/film/dispersion", "lag_s", ff.dispersion_lag);
   f.write("/film/ring_z", ff.ring_z, "m");
@@ -98,45 +103,116 @@ void write_film(H5File& f, const dem::scene::FilmFields& ff) {
   f.set_attribute("/film/ring_volume_flux_mean", "meaning",
                   "phi * u over the whole circumference per axial section (rows) and wall-distance bin; "
                   "axial mass flow of a section = rho_s * sum over bins of this * shell area");
+  for (const char* name : {"thickness_mean", "thickness_std"})
+    f.attach_scale(std::string("/film/") + name, 0, "/film/section_z", "z");
+  for (const char* name : {"surface_axial_velocity", "moving_zone_of_bin"})
+    f.attach_scale(std::string("/film/") + name, 0, "/film/bin_theta", "theta");
+  for (const char* name : {"dispersion", "dispersion_std", "dispersion_drift"})
+    f.attach_scale(std::string("/film/") + name, 0, "/film/wall_distance_d", "wall distance");
+  for (const char* name : {"axial_velocity_mean", "axial_velocity_std", "axial_velocity_turns"}) {
+    f.attach_scale(std::string("/film/") + name, 0, "/film/arc_theta", "arc theta");
+    f.attach_scale(std::string("/film/") + name, 0, "/film/arc_z_over_length", "arc z/L");
+  }
+  for (const char* name : {"ring_solid_fraction_mean", "ring_solid_fraction_std", "ring_solid_fraction_turns",
+                           "ring_volume_flux_mean", "ring_volume_flux_std", "ring_volume_flux_turns"}) {
+    f.attach_scale(std::string("/film/") + name, 0, "/film/ring_z", "z");
+    f.attach_scale(std::string("/film/") + name, 1, "/film/wall_distance_d", "wall distance");
+  }
 }
 
+// One snapshot: the free particles, then the glued layer (glued = 1).
 void write_snapshot(H5File& f, const NamedSnapshot& s) {
   const std::string g = "/snapshots/" + s.name;
   f.create_group(g);
-  const auto& d = s.data;
-  const std::size_t n = d.x.size();
-  std::vector<double> pos(3 * n), vel(3 * n), id(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    pos[3 * i] = d.x[i], pos[3 * i + 1] = d.y[i], pos[3 * i + 2] = d.z[i];
-    vel[3 * i] = d.vx[i], vel[3 * i + 1] = d.vy[i], vel[3 * i + 2] = d.vz[i];
-    id[i] = static_cast<double>(d.id[i]);
+  std::vector<double> pos, vel, radius;
+  std::vector<std::int64_t> id, vertex;
+  std::vector<std::int8_t> glued;
+  for (const auto* part : {&s.data, &s.glued}) {
+    const auto& d = *part;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      pos.insert(pos.end(), {d.x[i], d.y[i], d.z[i]});
+      vel.insert(vel.end(), {d.vx[i], d.vy[i], d.vz[i]});
+      radius.push_back(d.radius[i]);
+      id.push_back(d.id[i]);
+      glued.push_back(part == &s.glued ? 1 : 0);
+      vertex.push_back(static_cast<std::int64_t>(vertex.size()));
+    }
   }
+  const std::size_t n = radius.size();
   f.write(g + "/position", pos, {n, 3}, "m");
   f.write(g + "/velocity", vel, {n, 3}, "m/s");
-  f.write(g + "/radius", d.radius, "m");
-  f.write(g + "/id", id, "1");
-  f.set_attribute(g, "time", d.time);
+  f.write(g + "/radius", radius, "m");
+  f.write_int64(g + "/id", id, {n}, "1");
+  f.write_int8(g + "/glued", glued, "1");
+  f.write_int64(g + "/vertex", vertex, {n}, "1");
+  f.set_attribute(g, "time", s.data.time);
+  f.set_attribute(g, "free_particles", static_cast<double>(s.data.size()));
+  f.set_attribute(g, "glued_particles", static_cast<double>(s.glued.size()));
 }
 
-std::string xdmf(const std::vector<NamedSnapshot>& snaps) {
+std::string data_item(const std::string& dims, const char* type, int precision, const std::string& path) {
+  return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type + "\" Precision=\"" + std::to_string(precision) +
+         "\" Format=\"HDF\">dem.h5:" + path + "</DataItem>";
+}
+
+// The drum's inner surface as triangles in the scene frame (axis on z from 0 to L): the
+// cylinder, the back plate and the outlet lip, enough to see the drum in ParaView. Returns
+// its XDMF (drum.xmf).
+std::string write_drum(H5File& f, const dem::scene::SceneConfig& c) {
+  const int seg = 72;
+  const double R = 0.5 * c.drum.diameter, L = c.slice.enabled ? c.slice.length : c.drum.length;
+  const double pi = 3.14159265358979323846;
+  std::vector<double> pts;
+  std::vector<std::int64_t> tri;
+  auto ring = [&](double r, double z) {
+    const auto first = static_cast<std::int64_t>(pts.size() / 3);
+    for (int k = 0; k < seg; ++k) pts.insert(pts.end(), {r * std::cos(2 * pi * k / seg), r * std::sin(2 * pi * k / seg), z});
+    return first;
+  };
+  auto band = [&](std::int64_t a, std::int64_t b) {  // quads between two rings, as triangles
+    for (int k = 0; k < seg; ++k) {
+      const int k1 = (k + 1) % seg;
+      tri.insert(tri.end(), {a + k, a + k1, b + k, b + k, a + k1, b + k1});
+    }
+  };
+  band(ring(R, 0.0), ring(R, L));
+  if (!c.slice.enabled && c.drum.back_plate) band(ring(R, 0.0), ring(0.0, 0.0));
+  if (!c.slice.enabled && c.drum.lip_height > 0.0) band(ring(R, L), ring(R - c.drum.lip_height, L));
+  f.write("/drum/points", pts, {pts.size() / 3, 3}, "m");
+  f.write_int64("/drum/triangles", tri, {tri.size() / 3, 3}, "1");
+  f.set_attribute("/drum", "frame", "drum axis on z from 0 to L; the drum turns about it (the glued layer with it)");
+  const std::string np = std::to_string(pts.size() / 3), nt = std::to_string(tri.size() / 3);
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"drum\" GridType=\"Uniform\">\n"
+    << "   <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << nt << "\">"
+    << data_item(nt + " 3", "Int", 8, "/drum/triangles") << "</Topology>\n"
+    << "   <Geometry GeometryType=\"XYZ\">" << data_item(np + " 3", "Float", 8, "/drum/points") << "</Geometry>\n"
+    << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  return x.str();
+}
+
+// The particle snapshots as an XDMF 3 temporal collection over dem.h5 (ParaView, meshio).
+std::string particles_xdmf(const std::vector<NamedSnapshot>& snaps) {
   std::ostringstream x;
   x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
     << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (const auto& s : snaps) {
-    const std::size_t n = s.data.x.size();
-    const std::string g = "dem.h5:/snapshots/" + s.name;
+    const std::string n = std::to_string(s.data.size() + s.glued.size());
+    const std::string g = "/snapshots/" + s.name;
+    auto attribute = [&](const char* name, const char* kind, const std::string& dims, const char* type, int precision) {
+      x << "    <Attribute Name=\"" << name << "\" AttributeType=\"" << kind << "\" Center=\"Node\">"
+        << data_item(dims, type, precision, g + "/" + name) << "</Attribute>\n";
+    };
     x << "   <Grid Name=\"" << s.name << "\" GridType=\"Uniform\">\n"
       << "    <Time Value=\"" << s.data.time << "\"/>\n"
-      << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\"/>\n"
-      << "    <Geometry GeometryType=\"XYZ\"><DataItem Dimensions=\"" << n
-      << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << g << "/position</DataItem></Geometry>\n"
-      << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\"><DataItem Dimensions=\"" << n
-      << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << g << "/velocity</DataItem></Attribute>\n"
-      << "    <Attribute Name=\"radius\" AttributeType=\"Scalar\" Center=\"Node\"><DataItem Dimensions=\"" << n
-      << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << g << "/radius</DataItem></Attribute>\n"
-      << "    <Attribute Name=\"id\" AttributeType=\"Scalar\" Center=\"Node\"><DataItem Dimensions=\"" << n
-      << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << g << "/id</DataItem></Attribute>\n"
-      << "   </Grid>\n";
+      << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\">"
+      << data_item(n, "Int", 8, g + "/vertex") << "</Topology>\n"
+      << "    <Geometry GeometryType=\"XYZ\">" << data_item(n + " 3", "Float", 8, g + "/position") << "</Geometry>\n";
+    attribute("velocity", "Vector", n + " 3", "Float", 8);
+    attribute("radius", "Scalar", n, "Float", 8);
+    attribute("id", "Scalar", n, "Int", 8);
+    attribute("glued", "Scalar", n, "Int", 1);
+    x << "   </Grid>\n";
   }
   x << "  </Grid>\n </Domain>\n</Xdmf>\n";
   return x.str();
@@ -163,23 +239,24 @@ std::vector<dem::scene::MassFlowSample> read_mass_flow_log(const H5File& f) {
   return log;
 }
 
-void write_dem_h5(const std::string& dir, const std::string& case_path, const std::string& resolved_yaml,
-                  const dem::scene::SceneConfig& scene, const DemRunResult& run) {
+void write_dem_h5(const std::string& dir, const Provenance& provenance, const dem::scene::SceneConfig& scene,
+                  const DemRunResult& run) {
   H5File f = H5File::create(dir + "/dem.h5");
-  f.set_attribute("/", "code_version", centrec::io::code_version());
+  write_provenance(f, provenance);
   f.set_attribute("/", "engine", run.engine);
   f.set_attribute("/", "engine_version", run.engine_version);
-  f.set_attribute("/", "case", case_path);
-  f.set_attribute("/", "resolved_config", resolved_yaml);
   f.set_attribute("/", "drum_radius_m", 0.5 * scene.drum.diameter);
   f.set_attribute("/", "particle_diameter_m", scene.particle.diameter);
   f.set_attribute("/", "turn_period_s", dem::scene::turn_period(scene));
   write_mass_flow(f, run.mass_flow);
   write_film(f, run.fields);
   f.create_group("/snapshots");
+  f.set_attribute("/snapshots", "snapshot_stride", static_cast<double>(run.snapshot_stride));
   for (const auto& s : run.snapshots) write_snapshot(f, s);
+  const std::string drum = write_drum(f, scene);
   f.commit();
-  write_text_atomically(dir + "/dem.xmf", xdmf(run.snapshots));
+  write_text_atomically(dir + "/dem.xmf", particles_xdmf(run.snapshots));
+  write_text_atomically(dir + "/drum.xmf", drum);
 }
 
 }  // namespace centrec::io

@@ -1,12 +1,14 @@
 #pragma once
-// DIR/dem.h5 of a DEM run (docs/outputs.md) and its XDMF sidecar DIR/dem.xmf so
-// ParaView opens the particle snapshots. Units are attributes of every dataset.
+// DIR/dem.h5 of a DEM run (docs/outputs.md) and its XDMF sidecars DIR/dem.xmf (the particle
+// snapshots) and DIR/drum.xmf (the drum surface) for ParaView. Units are attributes of every
+// dataset; 1D axes are HDF5 dimension scales of the datasets over them.
 //
 // Layout:
 //   /mass_flow/{time, fed, out, lost, holdup, particles}   cumulative masses vs time
 //   /film/...       averaged film fields over the sampled turns (absent without sampling)
-//   /snapshots/<name>/{position [N,3], velocity [N,3], radius, id}
-//   root attributes: code_version, engine, engine_version, case, resolved_config,
+//   /snapshots/<name>/{position [N,3], velocity [N,3], radius, id, glued, vertex}
+//   /drum/{points [P,3], triangles [T,3]}                  the drum's inner surface
+//   root attributes: the provenance (io/provenance.hpp), engine, engine_version,
 //                    drum_radius_m, particle_diameter_m, turn_period_s
 #include <string>
 #include <vector>
@@ -14,11 +16,12 @@
 #include "dem/scene/scene_config.hpp"
 #include "io/dem_run_result.hpp"
 #include "io/h5_file.hpp"
+#include "io/provenance.hpp"
 
 namespace centrec::io {
 
-void write_dem_h5(const std::string& dir, const std::string& case_path, const std::string& resolved_yaml,
-                  const dem::scene::SceneConfig& scene, const DemRunResult& run);
+void write_dem_h5(const std::string& dir, const Provenance& provenance, const dem::scene::SceneConfig& scene,
+                  const DemRunResult& run);
 
 // /mass_flow of an open dem.h5 (time, fed and out; the rest stays zero).
 std::vector<dem::scene::MassFlowSample> read_mass_flow_log(const H5File& f);

@@ -2,6 +2,8 @@
 // What a DEM run hands to its outputs (dem_run_report, dem_output_h5), whichever
 // engine produced it: counts, timings, the mass-flow log, the sampled film fields
 // and the particle snapshots. Engine-neutral: no reference to the native scene.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,9 +13,18 @@
 
 namespace centrec::io {
 
+// dem.h5 and dem.xmf keep every sampled snapshot while they hold at most this many particle
+// records in all (about 75 MB per million); a longer sampling keeps every k-th snapshot,
+// k = snapshot_stride(...), so a full-size drum's hundreds of turns fit in memory and on disk.
+constexpr double kSnapshotRecordBudget = 5e6;
+inline int snapshot_stride(double snapshots, double particles) {
+  return std::max(1, static_cast<int>(std::ceil(snapshots * particles / kSnapshotRecordBudget)));
+}
+
 struct NamedSnapshot {
   std::string name;  // group name, e.g. "t0.500000"
-  dem::scene::SnapshotArrays data;
+  dem::scene::SnapshotArrays data;    // the free particles (what the film samplers see)
+  dem::scene::SnapshotArrays glued;   // the glued rough-wall layer at the same time (may be empty)
 };
 
 struct DemRunResult {
@@ -34,6 +45,7 @@ struct DemRunResult {
   std::vector<dem::scene::ControllerWindow> controller;  // slice holdup controller windows
   dem::scene::FilmFields fields;
   std::vector<NamedSnapshot> snapshots;
+  int snapshot_stride = 1;  // every k-th sampled snapshot kept in `snapshots`
 };
 
 }  // namespace centrec::io

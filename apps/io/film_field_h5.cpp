@@ -30,6 +30,12 @@ void write_film_field(H5File& file, const thermal::FilmField& f, const std::stri
   if (!f.u_std.empty()) file.write(group + "/u_std", f.u_std, {nz, ne}, "m/s");
   if (!f.phi_std.empty()) file.write(group + "/phi_std", f.phi_std, {nz, ne}, "1");
   if (!f.D_std.empty()) file.write(group + "/D_std", f.D_std, {nz, ne}, "m2/s");
+  file.attach_scale(group + "/t", 0, group + "/z", "z");
+  for (const char* name : {"u", "phi", "D", "u_std", "phi_std", "D_std"})
+    if (file.exists(group + "/" + name)) {
+      file.attach_scale(group + "/" + name, 0, group + "/z", "z");
+      file.attach_scale(group + "/" + name, 1, group + "/eta", "eta");
+    }
   for (const Meta& m : kMeta) {
     file.set_attribute(group, m.name, f.*m.member);
     file.set_attribute(group, std::string(m.name) + "_units", m.units);

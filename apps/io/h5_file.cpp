@@ -1,5 +1,7 @@
 #include "io/h5_file.hpp"
 
+#include <hdf5_hl.h>
+
 #include <cstdio>
 #include <stdexcept>
 
@@ -80,24 +82,48 @@ void H5File::create_group(const std::string& path) {
 
 void H5File::write(const std::string& path, const std::vector<double>& data, const std::vector<std::size_t>& dims,
                    const std::string& units) {
+  write_typed(path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data.data(), data.size(), dims, units);
+}
+
+void H5File::write_int64(const std::string& path, const std::vector<std::int64_t>& data,
+                         const std::vector<std::size_t>& dims, const std::string& units) {
+  write_typed(path, H5T_STD_I64LE, H5T_NATIVE_INT64, data.data(), data.size(), dims, units);
+}
+
+void H5File::write_int8(const std::string& path, const std::vector<std::int8_t>& data, const std::string& units) {
+  write_typed(path, H5T_STD_I8LE, H5T_NATIVE_INT8, data.data(), data.size(), {data.size()}, units);
+}
+
+void H5File::write_typed(const std::string& path, hid_t file_type, hid_t mem_type, const void* data, std::size_t size,
+                         const std::vector<std::size_t>& dims, const std::string& units) {
   std::size_t n = 1;
   std::vector<hsize_t> hd;
   for (std::size_t d : dims) {
     n *= d;
     hd.push_back(d);
   }
-  if (dims.empty() || dims.size() > 2 || n != data.size())
+  if (dims.empty() || dims.size() > 2 || n != size)
     fail("dataset '" + path + "': shape does not match the data size", path_);
   const std::size_t slash = path.rfind('/');
   if (slash != std::string::npos && slash > 0) create_group(path.substr(0, slash));
   Handle space{H5Screate_simple(static_cast<int>(hd.size()), hd.data(), nullptr), H5Sclose};
   Handle lcpl{H5Pcreate(H5P_LINK_CREATE), H5Pclose};
   H5Pset_create_intermediate_group(lcpl.id, 1);
-  Handle ds{H5Dcreate2(id_, path.c_str(), H5T_IEEE_F64LE, space.id, lcpl.id, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
+  Handle ds{H5Dcreate2(id_, path.c_str(), file_type, space.id, lcpl.id, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
   if (ds.id < 0) fail("cannot create dataset '" + path + "'", path_);
-  if (n > 0 && H5Dwrite(ds.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
+  if (n > 0 && H5Dwrite(ds.id, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
     fail("cannot write dataset '" + path + "'", path_);
   write_string_attribute(ds.id, "units", units, path_);
+}
+
+void H5File::attach_scale(const std::string& dataset, int dim, const std::string& scale, const std::string& name) {
+  Handle sc{H5Dopen2(id_, scale.c_str(), H5P_DEFAULT), H5Dclose};
+  Handle ds{H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), H5Dclose};
+  if (sc.id < 0 || ds.id < 0) fail("no dataset '" + (sc.id < 0 ? scale : dataset) + "' for a dimension scale", path_);
+  if (H5DSis_scale(sc.id) <= 0 && H5DSset_scale(sc.id, name.c_str()) < 0)
+    fail("cannot make '" + scale + "' a dimension scale", path_);
+  if (H5DSattach_scale(ds.id, sc.id, static_cast<unsigned>(dim)) < 0)
+    fail("cannot attach scale '" + scale + "' to '" + dataset + "'", path_);
 }
 
 void H5File::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {

@@ -6,6 +6,7 @@
 #include <hdf5.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,13 @@ class H5File {
   void write(const std::string& path, const std::vector<double>& data, const std::string& units) {
     write(path, data, {data.size()}, units);
   }
+  // Integer datasets (ids, counts, flags, cell connectivity), same shapes as write().
+  void write_int64(const std::string& path, const std::vector<std::int64_t>& data, const std::vector<std::size_t>& dims,
+                   const std::string& units);
+  void write_int8(const std::string& path, const std::vector<std::int8_t>& data, const std::string& units);
+  // HDF5 dimension scales: makes the 1D dataset `scale` a scale named `name` and attaches it
+  // to dimension `dim` of `dataset` (h5py: ds.dims[dim][0]; ParaView and xarray read them).
+  void attach_scale(const std::string& dataset, int dim, const std::string& scale, const std::string& name);
   void set_attribute(const std::string& object_path, const std::string& name, const std::string& value);
   void set_attribute(const std::string& object_path, const std::string& name, double value);
 
@@ -48,6 +56,8 @@ class H5File {
 
  private:
   H5File(hid_t id, std::string path, std::string tmp_path);
+  void write_typed(const std::string& path, hid_t file_type, hid_t mem_type, const void* data, std::size_t size,
+                   const std::vector<std::size_t>& dims, const std::string& units);
   hid_t id_ = -1;
   std::string path_, tmp_path_;  // tmp_path_ empty for readers
 };

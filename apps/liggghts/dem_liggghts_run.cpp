@@ -59,7 +59,8 @@ io::DemRunResult run_dem_on_liggghts(const config::CaseFile& cf, const config::D
                                  LiggghtsLaunch launch) {
   if (!liggghts_available(launch.mpirun, launch.liggghts))
     throw std::runtime_error("LIGGGHTS not found: need `" + launch.mpirun + "` and `" + launch.liggghts +
-                             "` on PATH (Debian: apt-get install liggghts openmpi-bin; ./setup.sh does it)");
+                             "` on PATH: install them with `./setup.sh --with-liggghts` (Debian packages liggghts and "
+                             "openmpi-bin), or give --mpirun / --liggghts");
   const std::string dir = out_dir + "/liggghts";
   const LiggghtsDeckPlan plan = export_liggghts(cf, dc, dir);
   launch.work_dir = dir;
@@ -78,6 +79,8 @@ io::DemRunResult run_dem_on_liggghts(const config::CaseFile& cf, const config::D
 
   dem::scene::SceneSampler sampler(dc.scene, dc.sampling.sampler);
   io::DemRunResult r;
+  r.snapshot_stride = io::snapshot_stride(static_cast<double>(plan.sampled_turns) * plan.snapshots_per_turn,
+                                          static_cast<double>(plan.initial_free + plan.glued));
   std::size_t fed_dumps = 0;  // dumps taken into the sampler (the first, at sampling start, is kept only)
   auto take_dumps = [&](bool finished) {
     const auto files = list_dump_files(dir + "/" + plan.dump_dir, "film_", ".dump");
@@ -89,7 +92,9 @@ io::DemRunResult run_dem_on_liggghts(const config::CaseFile& cf, const config::D
       const std::int64_t index = (step - sampling_start) / plan.dump_every;  // 0 = sampling start
       char name[32];
       std::snprintf(name, sizeof name, "t%.6f", s.time);
-      if (index == 0 || step == sampling_start + plan.sampling_steps) r.snapshots.push_back({name, s});
+      // Every stride-th dump from the sampling start, and the last (free particles only).
+      if (index >= 0 && (index % r.snapshot_stride == 0 || step == sampling_start + plan.sampling_steps))
+        r.snapshots.push_back({name, s, {}});
       if (index > 0) {
         sampler.add_snapshot(std::move(s));
         if (index % plan.snapshots_per_turn == 0) sampler.end_turn();
@@ -99,6 +104,10 @@ io::DemRunResult run_dem_on_liggghts(const config::CaseFile& cf, const config::D
   };
 
   runs::ProgressMeter progress(total, dc.run.progress_interval);
+  char what[128];
+  std::snprintf(what, sizeof what, "spin-up to t = %.4g s, then %d sampled turn(s), in LIGGGHTS",
+                static_cast<double>(plan.spinup_steps) * plan.dt, plan.sampled_turns);
+  progress.phase("liggghts", what);
   double particle_steps = 0.0;
   auto poll = [&] {
     const auto log = read_liggghts_mass_flow(dir + "/" + plan.flow_file, plan.initial_holdup);

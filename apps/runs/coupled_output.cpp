@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "io/atomic_write.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/h5_file.hpp"
 #include "runs/thermal_output.hpp"
@@ -36,15 +37,20 @@ void write_coupling_group(io::H5File& f, const CoupledRun& r) {
   f.write("/coupling/dem_section_z", r.averages.section_z, "m");
   f.write("/coupling/dem_thickness", r.averages.thickness, "m");
   f.write("/coupling/dem_thickness_std", r.averages.thickness_std, "m");
+  for (const char* name : {"dem_thickness", "dem_thickness_std"})
+    f.attach_scale(std::string("/coupling/") + name, 0, "/coupling/dem_section_z", "z");
 }
 }  // namespace
 
-void write_coupled_h5(const std::string& dir, const CoupledRun& r) {
+void write_coupled_h5(const std::string& dir, const CoupledRun& r, const io::Provenance& p) {
   io::H5File f = io::H5File::create(dir + "/results.h5");
-  write_thermal_groups(f, r.thermal, r.result);
+  write_thermal_groups(f, r.thermal, r.result, p);
   write_coupling_group(f, r);
   f.commit();
+  io::write_text_atomically(dir + "/results.xmf", thermal_xdmf("results.h5", r.result));
   io::H5File film = io::H5File::create(dir + "/film.h5");
+  io::write_provenance(film, p);
+  film.set_attribute("/", "film_source", r.thermal.film_source);
   io::write_film_field(film, r.thermal.film, "/film");
   film.commit();
 }

@@ -9,21 +9,11 @@
 #include <filesystem>
 
 #include "io/atomic_write.hpp"
+#include "io/provenance.hpp"
 
 namespace centrec::runs {
 
 namespace fs = std::filesystem;
-
-namespace {
-std::uint64_t fnv1a(const std::string& s) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : s) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-}  // namespace
 
 std::string dem_cache_key(const std::string& resolved_dem_yaml, const config::DemCase& e, const std::string& version) {
   // The resolved section holds every key with its default; the values a receiver derives
@@ -33,7 +23,7 @@ std::string dem_cache_key(const std::string& resolved_dem_yaml, const config::De
                 e.scene.drum.length, e.scene.drum.omega, e.scene.drum.tilt, dem::scene::target_mass_flow(e.scene));
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx",
-                static_cast<unsigned long long>(fnv1a(resolved_dem_yaml + derived + "version: " + version)));
+                static_cast<unsigned long long>(io::fnv1a64(resolved_dem_yaml + derived + "version: " + version)));
   return hex;
 }
 

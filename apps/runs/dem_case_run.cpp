@@ -18,14 +18,34 @@
 
 namespace centrec::runs {
 
+namespace {
+// The glued rough-wall layer (Motion::drum) in the snapshot layout, for the outputs only.
+dem::scene::SnapshotArrays glued_layer(const dem::Simulation& sim) {
+  dem::scene::SnapshotArrays s;
+  s.time = sim.time();
+  for (std::size_t i = 0; i < sim.size(); ++i) {
+    if (sim.motions()[i] == dem::Motion::free) continue;
+    const dem::Vec3 x = sim.positions()[i], v = sim.velocities()[i];
+    s.x.push_back(x.x), s.y.push_back(x.y), s.z.push_back(x.z);
+    s.vx.push_back(v.x), s.vy.push_back(v.y), s.vz.push_back(v.z);
+    s.radius.push_back(sim.radii()[i]);
+    s.id.push_back(sim.ids()[i]);
+  }
+  return s;
+}
+}  // namespace
+
 io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir,
                                   const std::optional<io::RunCheckpoint>& ck) {
   io::ensure_directory(out_dir);
 
+  std::fprintf(stderr, "centrec dem: %s\nset-up: %s\n", cf.path.c_str(),
+               ck ? ("restoring the checkpoint in " + out_dir).c_str()
+                  : "building the drum, its rough wall and the initial film");
   dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(dc.scene);
   auto& sim = scene.simulation();
-  std::fprintf(stderr, "centrec dem: %s%s\n  %s\n  dt = %.3g s, %lld glued + %lld free particles, %d thread(s)\n",
-               cf.path.c_str(), ck ? (" resumed at t = " + std::to_string(sim.time()) + " s (" + ck->phase + ")").c_str() : "",
+  std::fprintf(stderr, "%s  %s\n  dt = %.3g s, %lld glued + %lld free particles, %d thread(s)\n",
+               ck ? ("  resumed at t = " + std::to_string(sim.time()) + " s (" + ck->phase + ")\n").c_str() : "",
                sim.time_step_advice().report().c_str(), sim.dt(), static_cast<long long>(scene.glued_particles()),
                static_cast<long long>(scene.free_particles()), sim.threads());
 
@@ -35,12 +55,19 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   const double chunk = std::max(sim.dt() * scene.steps_per_batch(), std::min(0.01, dc.run.duration));
   const double steps_before = ck ? ck->particle_steps : 0.0, wall_before = ck ? ck->wall_time : 0.0;
   double particle_steps = 0.0;  // this process's
+  // Progress lines carry the outlet and inlet flow over the last turn.
+  auto flows = [&] {
+    const auto w = dem::scene::window_flows(scene.mass_flow_log(), period);
+    char b[96];
+    std::snprintf(b, sizeof b, "outlet %.2f g/s, inlet %.2f g/s", w.out * 1e3, w.fed * 1e3);
+    return std::string(b);
+  };
   auto advance = [&](auto&& body) {
     const std::int64_t s0 = sim.step_count();
     const double n0 = static_cast<double>(sim.size());
     body();
     particle_steps += 0.5 * (n0 + static_cast<double>(sim.size())) * static_cast<double>(sim.step_count() - s0);
-    progress.update(sim.time(), sim.time() / period, particle_steps);
+    progress.update(sim.time(), sim.time() / period, particle_steps, false, flows);
   };
 
   // Checkpoints. The run rebuilds the neighbour lists at fixed points (after every spin-up
@@ -81,6 +108,10 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     return dem::scene::flow_steadiness(scene.mass_flow_log(), dc.scene, window, dc.run.steady_tolerance);
   };
   if (!ck || ck->phase == "spin-up") {
+    char what[128];
+    std::snprintf(what, sizeof what, "the drum runs to t = %.4g s (dem.run.duration) so the film fills and its outflow settles",
+                  dc.run.duration);
+    progress.phase("spin-up", what);
     while (sim.time() < dc.run.duration - 0.5 * sim.dt()) {
       advance([&] { scene.advance(std::min(chunk, dc.run.duration - sim.time())); });
       sim.rebuild_lists();
@@ -97,26 +128,44 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     }
     if (told) std::fprintf(stderr, "  spin-up ended at t = %.4g s: %s\n", sim.time(), steadiness().describe().c_str());
   }
-  auto keep = [&](dem::scene::SnapshotArrays s) {
+  // Every snapshot the samplers see is kept for dem.h5 and dem.xmf, with the glued layer
+  // (a resumed run keeps those after its checkpoint and the start snapshot, without glued).
+  auto keep = [&](const dem::scene::SnapshotArrays& s, bool with_glued) {
     char name[32];
     std::snprintf(name, sizeof name, "t%.6f", s.time);
-    snapshots.push_back({name, std::move(s)});
+    snapshots.push_back({name, s, with_glued ? glued_layer(sim) : dem::scene::SnapshotArrays{}});
   };
-  auto keep_snapshot = [&] { keep(dem::scene::take_snapshot(sim)); };
   if (ck && ck->phase != "spin-up") {
     sampler.load(ck->sampler.at("state"));
-    keep(ck->start_snapshot.value());
+    keep(ck->start_snapshot.value(), false);
   } else {
-    keep_snapshot();  // the film as sampling starts
+    keep(dem::scene::take_snapshot(sim), true);  // the film as sampling starts
   }
-  while (sampled < static_cast<int>(std::floor(dc.sampling.turns + 1e-9))) {
-    advance([&] { sampler.sample_turns(scene, 1.0); });
+  const int turns = static_cast<int>(std::floor(dc.sampling.turns + 1e-9));
+  const int per_turn = sampler.spec().snapshots_per_turn;
+  const int stride = io::snapshot_stride(turns * per_turn, static_cast<double>(sim.size()));
+  int taken = sampled * per_turn;  // sampled snapshots so far, counted from the start of sampling
+  // One turn as SceneSampler::sample_turns does it, keeping every stride-th snapshot.
+  auto sample_turn = [&] {
+    for (int k = 0; k < per_turn; ++k) {
+      advance([&] { scene.advance(period / per_turn); });
+      dem::scene::SnapshotArrays s = dem::scene::take_snapshot(sim);
+      if (++taken % stride == 0) keep(s, true);
+      sampler.add_snapshot(std::move(s));
+    }
+    sampler.end_turn();
+  };
+  if (sampled < turns)
+    progress.phase("sampling", std::to_string(turns) + " turn(s) of " + std::to_string(per_turn) +
+                                   " snapshots each for the film fields (thickness, velocity profiles, solid fraction)");
+  while (sampled < turns) {
+    sample_turn();
     ++sampled;
     sim.rebuild_lists();
     checkpoint("sampling", false);
   }
-  if (sim.time() > snapshots.back().data.time) keep_snapshot();
-  progress.update(sim.time(), sim.time() / period, particle_steps, true);
+  if (sim.time() > snapshots.back().data.time) keep(dem::scene::take_snapshot(sim), true);
+  progress.update(sim.time(), sim.time() / period, particle_steps, true, flows);
   progress.finish();
   checkpoint("done", dc.run.checkpoint_interval > 0.0);
   particle_steps += steps_before;
@@ -140,6 +189,7 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   r.wall_time = wall;
   r.fields = sampler.fields();
   r.snapshots = std::move(snapshots);
+  r.snapshot_stride = stride;
   return r;
 }
 

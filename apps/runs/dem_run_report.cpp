@@ -10,6 +10,7 @@
 #include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
 #include "io/dem_output_h5.hpp"
+#include "runs/provenance.hpp"
 #include "io/summary_json.hpp"
 
 namespace centrec::runs {
@@ -104,7 +105,8 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
 
 std::string mass_flow_csv(const std::vector<dem::scene::MassFlowSample>& log) {
   std::ostringstream csv;
-  csv << "# time_s,fed_kg,out_kg,lost_kg,holdup_kg,particles,slice_axial_flow_kg_s\n";
+  // One header line of column names (pandas.read_csv reads it as is); masses are cumulative.
+  csv << "time_s,fed_cumulative_kg,out_cumulative_kg,lost_cumulative_kg,holdup_kg,free_particles,slice_axial_flow_kg_s\n";
   for (const auto& s : log)
     csv << s.time << ',' << s.fed << ',' << s.out << ',' << s.lost << ',' << s.holdup << ',' << s.particles << ','
         << s.axial_flow << '\n';
@@ -115,25 +117,26 @@ std::string mass_flow_csv(const std::vector<dem::scene::MassFlowSample>& log) {
 
 void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf, const config::DemCase& dc, const io::DemRunResult& r) {
   io::write_json_file(out_dir + "/summary.json", summary(cf, dc, r));
-  io::write_dem_h5(out_dir, cf.path, cf.resolved_yaml, dc.scene, r);
+  io::write_dem_h5(out_dir, case_provenance(cf.path, cf.resolved_yaml), dc.scene, r);
   io::write_text_atomically(out_dir + "/mass_flow.csv", mass_flow_csv(r.mass_flow));
 
   const double window = dc.run.flow_window_turns * dem::scene::turn_period(dc.scene);
   const auto flows = dem::scene::window_flows(r.mass_flow, window);
   const double rate = r.wall_time > 0.0 ? r.particle_steps / r.wall_time : 0.0;
   if (dc.scene.slice.enabled)
-    std::printf("holdup %.4f kg (%lld particles), slice axial flow %.3f g/s over the last %.2f s\n", r.holdup_kg,
+    std::printf("holdup %.4f kg (%lld free particles), slice axial flow %.3f g/s over the last %.2f s\n", r.holdup_kg,
                 static_cast<long long>(r.free_particles), flows.axial * 1e3, window);
   else
-    std::printf("holdup %.4f kg (%lld particles), inlet %.3f g/s, outlet %.3f g/s over the last %.2f s\n", r.holdup_kg,
-                static_cast<long long>(r.free_particles), flows.fed * 1e3, flows.out * 1e3, window);
-  std::printf("flow: %s (tolerance %.0f %%)\n",
-              dem::scene::flow_steadiness(r.mass_flow, dc.scene, window, dc.run.steady_tolerance).describe().c_str(),
-              100.0 * dc.run.steady_tolerance);
-  std::printf("%.3g particle-steps/s, wall time %.1f s; wrote %s/summary.json\n", rate, r.wall_time, out_dir.c_str());
+    std::printf("holdup %.4f kg (%lld free particles), inlet %.3f g/s, outlet %.3f g/s over the last %.2f s\n",
+                r.holdup_kg, static_cast<long long>(r.free_particles), flows.fed * 1e3, flows.out * 1e3, window);
+  std::printf("%.3g particle-steps/s, wall time %.1f s\n", rate, r.wall_time);
   if (r.fields.snapshots > 0)
     std::printf("film thickness %.2f +- %.2f d over %zu turns\n", r.fields.mean_thickness.mean_d,
                 r.fields.mean_thickness.std_d, r.fields.turns);
+  std::printf("wrote %s/{summary.json,dem.h5,dem.xmf,drum.xmf,mass_flow.csv}\n", out_dir.c_str());
+  std::printf("steady state: %s (tolerance %.0f %%, dem.run.steady_tolerance)\n",
+              dem::scene::flow_steadiness(r.mass_flow, dc.scene, window, dc.run.steady_tolerance).describe().c_str(),
+              100.0 * dc.run.steady_tolerance);
 }
 
 }  // namespace centrec::runs

@@ -1,10 +1,16 @@
 #include "runs/thermal_output.hpp"
 
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
+#include <iterator>
+#include <sstream>
 
+#include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/h5_file.hpp"
+#include "runs/provenance.hpp"
 
 namespace centrec::runs {
 
@@ -71,6 +77,15 @@ void write_columns(io::H5File& f, const std::string& prefix, const std::vector<R
   }
 }
 
+// The fields results.xmf and thermal.xmf show, as flat [nz * nxi] copies in /xdmf: XDMF
+// readers take point data in point order, one dimension (meshio does not reshape).
+struct XdmfField {
+  const char* name;
+  const char* units;
+};
+const XdmfField kXdmfFields[] = {{"T", "K"},         {"k_n", "W/(m K)"}, {"k_bed", "W/(m K)"}, {"k_rad", "W/(m K)"},
+                                 {"k_mix", "W/(m K)"}, {"u", "m/s"},        {"phi", "1"},         {"D", "m2/s"}};
+
 // Film-average of a per-section quantity over the irradiated length (equal sections).
 double section_mean(const std::vector<thermal::KeffSection>& k, double thermal::KeffSection::*m) {
   double s = 0.0;
@@ -81,14 +96,34 @@ double section_mean(const std::vector<thermal::KeffSection>& k, double thermal::
 
 void write_thermal_h5(const std::string& path, const config::ThermalCase& c, const ThermalRun& r) {
   io::H5File f = io::H5File::create(path);
-  write_thermal_groups(f, c, r);
+  write_thermal_groups(f, c, r, case_provenance(c.path, c.resolved_yaml));
   f.commit();
+  const std::string xmf = path.substr(0, path.rfind('.')) + ".xmf";
+  io::write_text_atomically(xmf, thermal_xdmf(std::filesystem::path(path).filename().string(), r));
 }
 
-void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r) {
-  f.set_attribute("/", "centrec_version", centrec::io::code_version());
-  f.set_attribute("/", "config", c.resolved_yaml);
-  f.set_attribute("/", "case_file", c.path);
+std::string thermal_xdmf(const std::string& h5_name, const ThermalRun& r) {
+  const thermal::FilmGrid& g = r.op->grid();
+  const std::string n = std::to_string(g.nz * g.nxi);
+  const std::string cells = std::to_string((g.nz - 1) * (g.nxi - 1));
+  auto item = [&](const std::string& dims, const char* type, const std::string& path) {
+    return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"" + type + "\" Precision=\"8\" Format=\"HDF\">" +
+           h5_name + ":" + path + "</DataItem>";
+  };
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n  <Grid Name=\"film\" GridType=\"Uniform\">\n"
+    << "   <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << cells << "\">"
+    << item(cells + " 4", "Int", "/grid/quads") << "</Topology>\n"
+    << "   <Geometry GeometryType=\"XYZ\">" << item(n + " 3", "Float", "/grid/points") << "</Geometry>\n";
+  for (const XdmfField& field : kXdmfFields)
+    x << "   <Attribute Name=\"" << field.name << "\" AttributeType=\"Scalar\" Center=\"Node\">"
+      << item(n, "Float", std::string("/xdmf/") + field.name) << "</Attribute>\n";
+  x << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  return x.str();
+}
+
+void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r, const io::Provenance& p) {
+  io::write_provenance(f, p);
   f.set_attribute("/", "title", c.title);
   f.set_attribute("/", "film_source", c.film_source);
   const thermal::FilmGrid& g = r.op->grid();
@@ -104,6 +139,20 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
   f.write("/grid/u", g.u, {nz, nxi}, "m/s");
   f.write("/grid/phi", g.phi, {nz, nxi}, "1");
   f.write("/grid/D", g.D, {nz, nxi}, "m2/s");
+  // The grid for XDMF readers (thermal_xdmf): cell centres (z, eta, 0) and the quadrilaterals
+  // between neighbouring centres.
+  std::vector<double> points;
+  std::vector<std::int64_t> quads;
+  for (std::size_t i = 0; i < nz; ++i)
+    for (std::size_t j = 0; j < nxi; ++j) {
+      points.insert(points.end(), {g.zc[i], eta[i * nxi + j], 0.0});
+      if (i + 1 < nz && j + 1 < nxi) {
+        const auto a = static_cast<std::int64_t>(i * nxi + j), b = a + static_cast<std::int64_t>(nxi);
+        quads.insert(quads.end(), {a, b, b + 1, a + 1});
+      }
+    }
+  f.write("/grid/points", points, {nz * nxi, 3}, "m");
+  f.write_int64("/grid/quads", quads, {quads.size() / 4, 4}, "1");
   const thermal::FilmFields& fl = r.fields;
   f.write("/steady/T", fl.T, {nz, nxi}, "K");
   f.write("/steady/k_n", fl.k_n, {nz, nxi}, "W/(m K)");
@@ -124,12 +173,28 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
       {"mixing", "W/(m K)", [](const auto& s) { return s.mixing; }},
       {"moving_thickness", "m", [](const auto& s) { return s.moving_thickness; }}};
   write_columns(f, "/steady/keff/", r.keff, keff_columns);
+  for (const char* name : {"k_eff", "bed_conduction", "radiation", "mixing", "moving_thickness"})
+    f.attach_scale(std::string("/steady/keff/") + name, 0, "/steady/keff/z", "z");
+  for (const char* name : {"/grid/thickness", "/steady/T_surface", "/steady/q_absorbed", "/steady/q_emitted",
+                           "/steady/q_convected", "/steady/q_wall"})
+    f.attach_scale(name, 0, "/grid/z", "z");
+  for (const char* name : {"/grid/eta", "/grid/u", "/grid/phi", "/grid/D", "/steady/T", "/steady/k_n", "/steady/k_bed",
+                           "/steady/k_rad", "/steady/k_mix"}) {
+    f.attach_scale(name, 0, "/grid/z", "z");
+    f.attach_scale(name, 1, "/grid/xi", "xi");
+  }
   if (!fl.cavity_T.empty()) {
     // Enclosure surfaces: rings (z = 0 .. L), back plate, front annulus (if any).
     f.write("/steady/cavity/T", fl.cavity_T, "K");
     f.write("/steady/cavity/solar_irradiation", fl.cavity_solar_irradiation, "W/m2");
     f.write("/steady/cavity/thermal_irradiation", fl.cavity_thermal_irradiation, "W/m2");
   }
+  const std::vector<double>* xdmf_values[] = {&fl.T, &fl.k_n, &fl.k_bed, &fl.k_rad, &fl.k_mix, &g.u, &g.phi, &g.D};
+  static_assert(sizeof(xdmf_values) / sizeof(xdmf_values[0]) == std::size(kXdmfFields), "one array per XDMF field");
+  for (std::size_t k = 0; k < std::size(kXdmfFields); ++k)
+    f.write(std::string("/xdmf/") + kXdmfFields[k].name, *xdmf_values[k], kXdmfFields[k].units);
+  f.set_attribute("/xdmf", "description", "flat copies of the /steady and /grid fields in point order for thermal.xmf / "
+                                          "results.xmf (points: /grid/points, cells: /grid/quads)");
   f.set_attribute("/steady", "T_out_K", r.balance.T_out);
   f.set_attribute("/steady", "efficiency", r.balance.efficiency);
   f.set_attribute("/steady", "aperture_power_W", r.balance.aperture_power);
@@ -155,6 +220,8 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
         {"T_surface_max", "K", [](const auto& s) { return s.T_surface_max; }},
         {"mass_flow", "kg/s", [](const auto& s) { return s.balance.mass_flow; }}};
     write_columns(f, "/transient/", r.transient.samples, series);
+    for (const auto& c : series)
+      if (std::string(c.name) != "t") f.attach_scale(std::string("/transient/") + c.name, 0, "/transient/t", "t");
     f.write("/transient/T_final", r.transient.y_end, {nz, nxi}, "K");
   }
   io::write_film_field(f, c.film, "/film");

@@ -7,13 +7,18 @@
 
 #include "config/case_thermal.hpp"
 #include "io/h5_file.hpp"
+#include "io/provenance.hpp"
 #include "runs/thermal_case_run.hpp"
 
 namespace centrec::runs {
 
+// DIR/thermal.h5 and its XDMF sidecar DIR/thermal.xmf (the temperature field on its grid).
 void write_thermal_h5(const std::string& path, const config::ThermalCase& c, const ThermalRun& r);
-// The same content into an open file (root attributes, /grid, /steady, /transient, /film).
-void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r);
+// The same content into an open file (provenance, /grid, /steady, /transient, /film).
+void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r, const io::Provenance& p);
+// The XDMF 3 of the film grid in the file named h5_name (beside it): the cell centres as
+// points (z, eta, 0), quadrilaterals between them, the steady fields as point data.
+std::string thermal_xdmf(const std::string& h5_name, const ThermalRun& r);
 nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r);
 // Two printed lines: the receiver's power flow (aperture power, carried, losses through the
 // aperture, convective and wall losses, receiver efficiency, balance residual).

@@ -19,6 +19,7 @@ namespace {
 
 SimulationConfig engine_config(const SceneConfig& c) {
   SimulationConfig s;
+  s.verbose = false;  // a scene's runs print the time-step advice themselves, once
   s.gravity = scene_gravity(c);
   s.dt = c.dt;
   s.max_impact_speed = c.max_impact_speed;

@@ -17,11 +17,13 @@
 #include <fstream>
 
 #include "config/case_file.hpp"
+#include "io/code_version.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/h5_file.hpp"
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
 #include "runs/dem_cache.hpp"
+#include "runs/provenance.hpp"
 
 using namespace centrec;
 using namespace centrec::config;
@@ -127,7 +129,14 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
   EXPECT_GT(h.result.balance.T_out, T1 + 10.0);
 
   // Outputs: results.h5 with /film and /coupling, film.h5 reusable, summary figures.
-  write_coupled_h5(dir, first);
+  write_coupled_h5(dir, first, case_provenance(cf.path, cf.resolved_yaml));
+  // Provenance in both files: the resolved case, the code version, the case file's hash.
+  for (const char* name : {"/results.h5", "/film.h5"}) {
+    const auto h5 = io::H5File::open_read(dir + name);
+    EXPECT_NE(h5.string_attribute("/", "resolved_config").find("receiver:"), std::string::npos) << name;
+    EXPECT_EQ(h5.string_attribute("/", "code_version"), centrec::io::code_version()) << name;
+    EXPECT_NE(h5.string_attribute("/", "input_hashes").find("fnv1a64:"), std::string::npos) << name;
+  }
   const auto summary = coupled_summary(first);
   EXPECT_EQ(summary["T_out_K"].get<double>(), T1);
   EXPECT_TRUE(summary.contains("scaling"));

@@ -48,7 +48,7 @@ int run_and_kill(const std::string& case_path, const std::string& out) {
   if (child == 0) {
     int rc = 1;
     try {
-      rc = cmd_dem({case_path, "--out", out});
+      rc = cmd_dem({case_path, "--out", out, "--no-plots"});
     } catch (...) {
     }
     ::_exit(rc);
@@ -82,8 +82,8 @@ TEST(DemResume, KilledAndResumedRunEqualsUninterruptedRun) {
   const int at = run_and_kill(case_path, killed);
   std::printf("killed after %d sampled turn(s); resuming\n", at);
   EXPECT_FALSE(std::filesystem::exists(killed + "/summary.json"));
-  ASSERT_EQ(cmd_dem({"--resume", killed}), 0);
-  ASSERT_EQ(cmd_dem({case_path, "--out", whole}), 0);
+  ASSERT_EQ(cmd_dem({"--resume", killed, "--no-plots"}), 0);
+  ASSERT_EQ(cmd_dem({case_path, "--out", whole, "--no-plots"}), 0);
 
   std::size_t compared = 0;
   for (const char* p : {"/mass_flow/time", "/mass_flow/fed", "/mass_flow/out", "/mass_flow/holdup",
@@ -115,7 +115,7 @@ TEST(DemResume, RefusesDamagedOrMismatchedCheckpoints) {
   text.replace(text.find("duration: 0.04"), 14, "duration: 0.01");
   const std::string case_path = write_case(dir, text);
   const std::string out = dir + "/run";
-  ASSERT_EQ(cmd_dem({case_path, "--out", out}), 0);
+  ASSERT_EQ(cmd_dem({case_path, "--out", out, "--no-plots"}), 0);
   ASSERT_NO_THROW(read_checkpoint(out));
 
   // A case that differs from the stored one.

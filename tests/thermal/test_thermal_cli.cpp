@@ -106,8 +106,9 @@ TEST(ThermalCli, CommandWritesH5AndSummary) {
   EXPECT_EQ(dims[1], 12u);
   EXPECT_EQ(f.string_attribute("/steady/T", "units"), "K");
   EXPECT_EQ(f.string_attribute("/steady/keff/k_eff", "units"), "W/(m K)");
-  EXPECT_EQ(f.string_attribute("/", "centrec_version"), centrec::io::code_version());
-  EXPECT_NE(f.string_attribute("/", "config").find("T_in: 873.15"), std::string::npos);
+  EXPECT_EQ(f.string_attribute("/", "code_version"), centrec::io::code_version());
+  EXPECT_NE(f.string_attribute("/", "resolved_config").find("T_in: 873.15"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/out/thermal.xmf"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/out/thermal.h5.tmp"));
   std::ifstream js(dir + "/out/summary.json");
   const std::string text((std::istreambuf_iterator<char>(js)), std::istreambuf_iterator<char>());
