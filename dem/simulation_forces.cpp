@@ -62,7 +62,7 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   const std::uint32_t* start = im.list.start.data();
   const std::int32_t* nbr = im.list.nbr.data();
   ContactHistory* hist = im.list.hist.data();
-  ContactHistory* whist = im.wall_hist.data();
+  ContactHistory* whist = wall_hist_.data();
   std::uint8_t* touch = im.touch.data();
   const std::uint32_t* wall_mask = im.wall_mask.data();
   // Row ranges of the pair pass: one per thread (results do not depend on their number).

@@ -38,7 +38,6 @@ struct Simulation::Impl {
   // rigid rotation), so a co-rotating film does not trigger rebuilds at omega R / skin.
   bool drum_frame = false;
   double angle_since_build = 0.0;
-  std::vector<ContactHistory> wall_hist;    // N x walls
   std::vector<std::uint32_t> wall_mask;     // candidate walls per particle
   std::vector<BlockTally> tallies;
   std::vector<std::uint8_t> touch;  // per list entry: in contact at the last force pass (then hist may be non-zero)
