@@ -203,7 +203,6 @@ class Simulation {
   void require_interactions(int m, const char* what);
   // x: the particle's position when the blow-up was detected (the force pass may have moved it since).
   [[noreturn]] void report_blow_up(std::size_t i, Vec3 x, double overlap, const std::string& partner) const;
-  PairConstants const& pair(int a, int b) const { return pc_[static_cast<std::size_t>(a) * n_mat_ + b]; }
 
   SimulationConfig cfg_;
   int threads_ = 1;

@@ -24,6 +24,27 @@ struct BlockTally {
   Vec3 blowup_x;           // its position then
   double blowup_overlap = 0.0;
   std::string blowup_partner;
+
+  void reset(std::size_t walls) {
+    wall_force.assign(walls, Vec3{});
+    pair_contacts = wall_contacts = 0;
+    blowup_index = -1;
+  }
+  // Keeps the block's first blow-up: particle i at x, its overlap (NaN: a non-finite
+  // state) and what it overlaps (partner(), a string, built only for the first).
+  template <class Partner>
+  void note_blow_up(long i, Vec3 x, double overlap, Partner partner) {
+    if (blowup_index >= 0) return;
+    blowup_index = i;
+    blowup_x = x;
+    blowup_overlap = overlap;
+    blowup_partner = partner();
+  }
+};
+
+// A partner's share of one pair, parked until the parked pass sums it (partner_routing.hpp).
+struct PartnerShare {
+  Vec3 force, torque;
 };
 
 struct Simulation::Impl {
@@ -46,9 +67,6 @@ struct Simulation::Impl {
   // parked ones to `share` (grouped by partner; zero while the entry is not in contact).
   PartnerRouting routing;
   std::vector<Vec3> acc_f, acc_t;
-  struct PartnerShare {
-    Vec3 force, torque;
-  };
   std::vector<PartnerShare> share;
   std::size_t rebuilds = 0, pair_contacts = 0, wall_contacts = 0;
 };
