@@ -3,9 +3,9 @@
 // timed phases as the LIGGGHTS deck.
 #include <memory>
 
-#include "tests/bench/engine_result.hpp"
-#include "tests/bench/film_case.hpp"
-#include "tests/bench/film_initial_state.hpp"
+#include "bench/engine_result.hpp"
+#include "bench/film_case.hpp"
+#include "bench/film_initial_state.hpp"
 
 namespace centrec::bench {
 

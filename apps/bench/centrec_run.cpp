@@ -1,4 +1,4 @@
-#include "tests/bench/centrec_run.hpp"
+#include "bench/centrec_run.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "dem/simulation.hpp"
-#include "tests/bench/film_summary.hpp"
-#include "tests/bench/process_memory.hpp"
+#include "bench/film_summary.hpp"
+#include "bench/process_memory.hpp"
 
 namespace centrec::bench {
 namespace {

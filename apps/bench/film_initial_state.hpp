@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/bench/film_case.hpp"
+#include "bench/film_case.hpp"
 
 namespace centrec::bench {
 

@@ -5,7 +5,7 @@ and a PNG: holdup, inlet/outlet mass flow, eqs 4-7 film thickness (whole film an
 and the nine axial-velocity profiles (paper Fig 6), each with its spread over the sampled
 turns (std over turns; sigma = sqrt(s_a^2 + s_b^2) for a difference).
 
-usage: /usr/bin/python3 tests/bench/engine_crosscheck.py NATIVE_DIR LIGGGHTS_DIR --png OUT.png --table OUT.md
+usage: /usr/bin/python3 apps/bench/engine_crosscheck.py NATIVE_DIR LIGGGHTS_DIR --png OUT.png --table OUT.md
 """
 import argparse
 import json

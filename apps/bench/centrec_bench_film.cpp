@@ -13,13 +13,13 @@
 #include <vector>
 
 #include "liggghts/liggghts_stl.hpp"
-#include "tests/bench/bench_options.hpp"
-#include "tests/bench/bench_table.hpp"
-#include "tests/bench/centrec_run.hpp"
-#include "tests/bench/film_case.hpp"
-#include "tests/bench/film_initial_state.hpp"
-#include "tests/bench/liggghts_deck.hpp"
-#include "tests/bench/liggghts_run.hpp"
+#include "bench/bench_options.hpp"
+#include "bench/bench_table.hpp"
+#include "bench/centrec_run.hpp"
+#include "bench/film_case.hpp"
+#include "bench/film_initial_state.hpp"
+#include "bench/liggghts_deck.hpp"
+#include "bench/liggghts_run.hpp"
 
 namespace fs = std::filesystem;
 using namespace centrec::bench;

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "tests/bench/engine_result.hpp"
-#include "tests/bench/film_case.hpp"
+#include "bench/engine_result.hpp"
+#include "bench/film_case.hpp"
 
 namespace centrec::bench {
 

@@ -2,7 +2,7 @@
 # Cost per particle of the 2e5 film relative to the 1e4 film, measured in rounds that
 # alternate the two sizes (centrec only), so that a slow spell of this shared machine hits
 # both sizes of a round instead of one size of a whole benchmark run.
-#   tests/bench/cost_ratio_rounds.sh [ROUNDS] [THREADS]      (defaults 3 rounds, 1 thread)
+#   apps/bench/cost_ratio_rounds.sh [ROUNDS] [THREADS]      (defaults 3 rounds, 1 thread)
 # Each round: 1e4, then 2e5, each settle 1500 steps, then the same film window of 3 x 500
 # steps (equal film state at both sizes); the 1e4 film replays that window from its settled
 # state 19 times (--replay-particle-steps 3e8), so both sizes time about 3e8 particle-steps.
@@ -11,7 +11,7 @@ set -euo pipefail
 rounds=${1:-3}
 threads=${2:-1}
 here=$(cd "$(dirname "$0")/../.." && pwd)
-bench=${BENCH:-$here/${BUILD_DIR:-build}/tests/bench/centrec_bench_film}
+bench=${BENCH:-$here/${BUILD_DIR:-build}/apps/bench/centrec_bench_film}
 [ -x "$bench" ] || { echo "no benchmark at $bench (run ./setup.sh, or set BENCH)" >&2; exit 1; }
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT

@@ -3,8 +3,8 @@
 // LAMMPS data format) and the deck (settle, timed runs, final state report).
 #include <string>
 
-#include "tests/bench/film_case.hpp"
-#include "tests/bench/film_initial_state.hpp"
+#include "bench/film_case.hpp"
+#include "bench/film_initial_state.hpp"
 
 namespace centrec::bench {
 

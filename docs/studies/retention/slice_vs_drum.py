@@ -5,7 +5,7 @@ profiles at 45/90/135 deg and the flux per holdup, with wall times. The first po
 the speed-vs-accuracy chart.
 
 usage (from the repository root, after the study ran the setting's drum):
-  /usr/bin/python3 tests/retention/slice_vs_drum.py --setting NAME [--lengths 6,12,24] [--jobs 2]
+  /usr/bin/python3 docs/studies/retention/slice_vs_drum.py --setting NAME [--lengths 6,12,24] [--jobs 2]
 
 Writes cases/retention/slice_<NAME>_<L>d.yaml (free particles per length = the drum's
 mid-section), runs them (`centrec dem --threads 1`), and writes
@@ -92,7 +92,7 @@ def main():
     for ls in lengths:
         dem = slice_dem(drum_dem, ls, per_len)
         path = os.path.join(a.cases, f"slice_{name}_{ls:g}d.yaml")
-        comment = (f"Slice vs drum (tests/retention/slice_vs_drum.py writes this file): a {ls:g} d periodic slice\n"
+        comment = (f"Slice vs drum (docs/studies/retention/slice_vs_drum.py writes this file): a {ls:g} d periodic slice\n"
                    f"of the retention study's drum with '{label}', holding the drum's mid-section free mass\n"
                    f"per length ({per_len * 1e3:.4f} g/m); same settle time and sampled turns as the drum.")
         text = rc.case_yaml(f"slice_{name}_{ls:g}d", comment, dem)

@@ -1,4 +1,4 @@
-#include "tests/bench/liggghts_log.hpp"
+#include "bench/liggghts_log.hpp"
 
 #include <algorithm>
 #include <fstream>

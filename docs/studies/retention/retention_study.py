@@ -2,14 +2,14 @@
 """The retention study: which retention setting reproduces the paper's film.
 
 usage (from the repository root, after ./setup.sh):
-  /usr/bin/python3 tests/retention/retention_study.py [--jobs 2] [--only NAME,...]
+  /usr/bin/python3 docs/studies/retention/retention_study.py [--jobs 2] [--only NAME,...]
         [--cases-only] [--analyse-only] [--out out/retention] [--docs docs/retention]
 
 Writes cases/retention/<setting>.yaml (one drum scaled from D12 to D/d = 25 by eqs 1-3,
 pre-filled with the paper's scaled holdup), runs each with `centrec dem --threads 1`,
 --jobs at a time (a finished run of the same case text is reused), then
-measures every run (tests/retention/retention_metrics.py) and writes
-docs/retention/results.{md,json} and the charts (tests/retention/retention_charts.py).
+measures every run (docs/studies/retention/retention_metrics.py) and writes
+docs/retention/results.{md,json} and the charts (docs/studies/retention/retention_charts.py).
 """
 import argparse
 import concurrent.futures
@@ -44,7 +44,7 @@ def write_cases(drum, case_dir, settings):
     paths = {}
     for name, _group, label, overrides in settings:
         dem = rc.setting_dem(drum, overrides)
-        comment = (f"Retention study (tests/retention/retention_study.py writes this file): {label}.\n"
+        comment = (f"Retention study (docs/studies/retention/retention_study.py writes this file): {label}.\n"
                    f"D12 scaled to D/d = {rc.D_OVER_D} by eqs 1-3; pre-filled so free + glued particles hold the\n"
                    f"paper's film ({drum['thickness_d']:.2f} d at f_s 0.5 = {drum['particles']:.0f} particles here), "
                    f"settled {rc.SETTLE_S} s,\nthen {rc.SAMPLE_TURNS} turns sampled. "

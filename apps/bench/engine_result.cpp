@@ -1,4 +1,4 @@
-#include "tests/bench/engine_result.hpp"
+#include "bench/engine_result.hpp"
 
 #include <algorithm>
 

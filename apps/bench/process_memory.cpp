@@ -1,4 +1,4 @@
-#include "tests/bench/process_memory.hpp"
+#include "bench/process_memory.hpp"
 
 #include <fstream>
 #include <string>

@@ -1,4 +1,4 @@
-#include "tests/bench/film_summary.hpp"
+#include "bench/film_summary.hpp"
 
 #include <algorithm>
 #include <cmath>

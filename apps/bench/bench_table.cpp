@@ -1,4 +1,4 @@
-#include "tests/bench/bench_table.hpp"
+#include "bench/bench_table.hpp"
 
 #include <cstdio>
 #include <map>

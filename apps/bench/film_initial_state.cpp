@@ -1,4 +1,4 @@
-#include "tests/bench/film_initial_state.hpp"
+#include "bench/film_initial_state.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "tests/bench/liggghts_run.hpp"
+#include "bench/liggghts_run.hpp"
 
 #include "liggghts/liggghts_launch.hpp"
-#include "tests/bench/liggghts_log.hpp"
+#include "bench/liggghts_log.hpp"
 
 namespace centrec::bench {
 

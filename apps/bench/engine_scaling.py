@@ -4,8 +4,8 @@ LIGGGHTS 3.8 at 1 and 2 ranks, back to back in one run, so all four see the same
 load. Prints and writes a Markdown table (wall time, particle-steps/s, LIGGGHTS' own loop
 time) and the machine load average before and after each run.
 
-usage: /usr/bin/python3 tests/bench/engine_scaling.py [--centrec build/centrec]
-       [--case tests/bench/scaling_quickstart.yaml] [--out scaling-out] [--table FILE.md]
+usage: /usr/bin/python3 apps/bench/engine_scaling.py [--centrec build/centrec]
+       [--case apps/bench/scaling_quickstart.yaml] [--out scaling-out] [--table FILE.md]
 """
 import argparse
 import json
@@ -16,7 +16,7 @@ import time
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--centrec", default="build/centrec")
-ap.add_argument("--case", default="tests/bench/scaling_quickstart.yaml")
+ap.add_argument("--case", default="apps/bench/scaling_quickstart.yaml")
 ap.add_argument("--out", default="scaling-out")
 ap.add_argument("--table", default="")
 a = ap.parse_args()

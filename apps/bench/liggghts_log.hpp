@@ -4,7 +4,7 @@
 // of the timed runs, and the BENCH_STATE lines the deck prints.
 #include <string>
 
-#include "tests/bench/engine_result.hpp"
+#include "bench/engine_result.hpp"
 
 namespace centrec::bench {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The film's state from particle arrays, computed as the LIGGGHTS deck computes it.
-#include "tests/bench/engine_result.hpp"
-#include "tests/bench/film_case.hpp"
+#include "bench/engine_result.hpp"
+#include "bench/film_case.hpp"
 
 namespace centrec::bench {
 

@@ -2,8 +2,8 @@
 // Runs LIGGGHTS 3.8 on the benchmark film with mpirun and collects its timings.
 #include <string>
 
-#include "tests/bench/engine_result.hpp"
-#include "tests/bench/liggghts_deck.hpp"
+#include "bench/engine_result.hpp"
+#include "bench/liggghts_deck.hpp"
 
 namespace centrec::bench {
 
