@@ -1,18 +1,18 @@
 // The force pass of Simulation (docs/dem_physics.md): Hertz-Mindlin-EPSD2 for every
 // pair of the half neighbour list and every candidate wall, summed deterministically
-// (docs/architecture.md "Threads and determinism"). The algorithm, one row (particle i)
-// at a time, in compute_forces:
-//   1. fetch ahead: the data the rows ahead will read          (ForcePass::fetch_ahead)
-//   2. pair row: the contacts of i with its partners j > i      (ForcePass::pair_row)
-//      - the owner's share summed at once, the partner's routed (ForcePass::route_share)
-//   3. row total: i's direct partner shares, its wall contacts  (ForcePass::row_total,
-//      and gravity; then i is integrated if no share of it is     ForcePass::wall_contacts)
-//      parked                                                   (ParticleFinish)
-//   4. after every range: the parked particles summed and       (ForcePass::parked_total)
-//      integrated
-//   5. per-block tallies (wall forces, counts, blow-ups) reduced in block order.
-// The arithmetic of each step is written once, in a fixed operation order: results are
-// the same bits for any thread count.
+// (docs/architecture.md "Threads and determinism"). compute_forces works on ranges of
+// rows (one per thread), one row (particle i) at a time:
+//   1. ForcePass::fetch_ahead   the data the rows ahead will read, into cache
+//   2. ForcePass::pair_row      the contacts of i with its partners j > i: the owner's
+//                               share summed at once, the partner's routed (route_share)
+//   3. ForcePass::row_total     i's direct partner shares, its wall contacts
+//                               (wall_contacts) and gravity; then i is integrated
+//                               (ParticleFinish) unless a share of it is parked
+// then, once every range is done:
+//   4. ForcePass::parked_total  each parked particle: its shares summed, then integrated
+//   5. the per-block tallies (wall forces, counts, blow-ups) reduced in block order.
+// Each step's arithmetic is written once, in a fixed operation order: results are the
+// same bits for any thread count.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
