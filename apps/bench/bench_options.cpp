@@ -1,10 +1,11 @@
 #include "bench/bench_options.hpp"
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
+
+#include "cli/command_line.hpp"
 
 namespace centrec::bench {
 namespace {
@@ -49,10 +50,14 @@ BenchOptions parse_bench_options(int argc, char** argv) {
   double steps = static_cast<double>(o.steps), settle = static_cast<double>(o.settle_steps),
          repeats = o.repeats, facets = o.stl_facets;
   auto list = [&](const char* name, std::vector<double>& v, const char* what) {
-    app.add_option(name, v, what)->delimiter(',')->check(CLI::PositiveNumber)->expected(1, 1 << 20)->type_name("N,N,..");
+    app.add_option(name, v, what)
+        ->delimiter(',')
+        ->check(cli::positive_number())
+        ->expected(1, 1 << 20)
+        ->type_name("N,N,..");
   };
   auto number = [&](const char* name, double& v, const char* what) {
-    app.add_option(name, v, what)->check(CLI::PositiveNumber)->type_name("X");
+    app.add_option(name, v, what)->check(cli::positive_number())->type_name("X");
   };
   list("--sizes", sizes, "target particle counts (default 10000,50000,200000)");
   list("--threads", threads, "centrec OpenMP threads = LIGGGHTS MPI ranks (default 1,2)");
