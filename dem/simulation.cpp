@@ -17,10 +17,12 @@ namespace centrec::dem {
 namespace {
 
 
+// Rows of `width` elements: row k of the result is row order[k] of a.
 template <class T>
-void permute(std::vector<T>& a, const std::vector<std::int32_t>& order) {
-  std::vector<T> out(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) out[k] = a[static_cast<std::size_t>(order[k])];
+void permute(std::vector<T>& a, const std::vector<std::int32_t>& order, std::size_t width) {
+  std::vector<T> out(order.size() * width);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    for (std::size_t c = 0; c < width; ++c) out[k * width + c] = a[static_cast<std::size_t>(order[k]) * width + c];
   a.swap(out);
 }
 
@@ -131,12 +133,16 @@ int Simulation::add_wall(const Wall& w) {
                                   std::to_string(u) + " have no interaction: call set_interaction first");
   if (walls_.size() >= static_cast<std::size_t>(kMaxWalls))
     throw std::invalid_argument("at most " + std::to_string(kMaxWalls) + " walls");
-  // Re-lay the N x walls history array with one more column.
+  // Re-lay the per-wall arrays (rows of walls_.size()) with one more column.
   const std::size_t nw = walls_.size();
-  std::vector<ContactHistory> h(x_.size() * (nw + 1));
-  for (std::size_t i = 0; i < x_.size(); ++i)
-    for (std::size_t k = 0; k < nw; ++k) h[i * (nw + 1) + k] = impl_->wall_hist[i * nw + k];
-  impl_->wall_hist.swap(h);
+  for_each_particle_array([&](auto array, auto, const char*, const char*, bool per_wall) {
+    if (!per_wall) return;
+    auto& a = this->*array;
+    std::remove_reference_t<decltype(a)> wider(x_.size() * (nw + 1));
+    for (std::size_t i = 0; i < x_.size(); ++i)
+      for (std::size_t k = 0; k < nw; ++k) wider[i * (nw + 1) + k] = a[i * nw + k];
+    a.swap(wider);
+  });
   invalidate_list();  // wall candidate masks must be rebuilt
   walls_.push_back(w);
   wall_force_.push_back({});
@@ -148,7 +154,7 @@ const Wall& Simulation::wall(int index) const { return walls_.at(static_cast<std
 Vec3 Simulation::wall_force(int index) const { return wall_force_.at(static_cast<std::size_t>(index)); }
 
 const ContactHistory& Simulation::wall_history(std::size_t index, int wall) const {
-  return impl_->wall_hist.at(index * walls_.size() + static_cast<std::size_t>(wall));
+  return wall_hist_.at(index * walls_.size() + static_cast<std::size_t>(wall));
 }
 
 std::int64_t Simulation::add_particle(const ParticleInit& p) {
@@ -156,26 +162,32 @@ std::int64_t Simulation::add_particle(const ParticleInit& p) {
   if (!is_finite(p.x) || !is_finite(p.v) || !is_finite(p.w)) throw std::invalid_argument("particle: non-finite state");
   require_interactions(p.material.index, "particle");
   invalidate_list();
-  const double mass = sphere_mass(materials_[static_cast<std::size_t>(p.material.index)].density, p.radius);
   const std::int64_t id = next_id_++;
   if (insert_log_.empty() || insert_log_.back().first != step_) insert_log_.push_back({step_, id});
-  id_.push_back(id);
-  Vec3 x = p.x;
-  x.z = impl_->pz.wrap(x.z);
-  x_.push_back(x);
-  v_.push_back(p.v);
-  w_.push_back(p.w);
-  f_.push_back(mass * cfg_.gravity);  // gravity for the first half-kick
-  t_.push_back({});
-  r_.push_back(p.radius);
-  m_.push_back(mass);
-  inv_m_.push_back(1.0 / mass);
-  inv_inertia_.push_back(1.0 / (0.4 * mass * p.radius * p.radius));
-  mat_.push_back(p.material.index);
-  motion_.push_back(p.motion);
-  impl_->wall_hist.resize(x_.size() * walls_.size());
+  // One zero row in every array, then the particle's values (zero torque, wall histories).
+  const std::size_t i = x_.size();
+  for_each_particle_array([&](auto array, auto, const char*, const char*, bool per_wall) {
+    (this->*array).resize((i + 1) * row_width(per_wall));
+  });
+  id_[i] = id;
+  x_[i] = p.x;
+  x_[i].z = impl_->pz.wrap(p.x.z);
+  v_[i] = p.v;
+  w_[i] = p.w;
+  r_[i] = p.radius;
+  mat_[i] = p.material.index;
+  motion_[i] = p.motion;
+  set_mass_properties(i);
+  f_[i] = m_[i] * cfg_.gravity;  // gravity for the first half-kick
   dirty_ = true;
   return id;
+}
+
+void Simulation::set_mass_properties(std::size_t i) {
+  const double mass = sphere_mass(materials_[static_cast<std::size_t>(mat_[i])].density, r_[i]);
+  m_[i] = mass;
+  inv_m_[i] = 1.0 / mass;
+  inv_inertia_[i] = 1.0 / (0.4 * mass * r_[i] * r_[i]);
 }
 
 void Simulation::invalidate_list() {
@@ -188,23 +200,9 @@ void Simulation::invalidate_list() {
 }
 
 void Simulation::permute_particles(const std::vector<std::int32_t>& order) {
-  permute(id_, order);
-  permute(x_, order);
-  permute(v_, order);
-  permute(w_, order);
-  permute(f_, order);
-  permute(t_, order);
-  permute(r_, order);
-  permute(m_, order);
-  permute(inv_m_, order);
-  permute(inv_inertia_, order);
-  permute(mat_, order);
-  permute(motion_, order);
-  const std::size_t nw = walls_.size();
-  std::vector<ContactHistory> h(order.size() * nw);
-  for (std::size_t k = 0; k < order.size(); ++k)
-    for (std::size_t w = 0; w < nw; ++w) h[k * nw + w] = impl_->wall_hist[static_cast<std::size_t>(order[k]) * nw + w];
-  impl_->wall_hist.swap(h);
+  for_each_particle_array([&](auto array, auto, const char*, const char*, bool per_wall) {
+    permute(this->*array, order, row_width(per_wall));
+  });
 }
 
 std::size_t Simulation::remove_particles(const std::vector<std::int64_t>& ids) {
@@ -454,10 +452,9 @@ NeighbourStats Simulation::neighbour_stats() const {
 
 std::size_t Simulation::memory_bytes() const {
   const Impl& im = *impl_;
-  std::size_t b = bytes_of(id_) + bytes_of(x_) + bytes_of(v_) + bytes_of(w_) + bytes_of(f_) + bytes_of(t_) +
-                  bytes_of(r_) + bytes_of(m_) + bytes_of(inv_m_) + bytes_of(inv_inertia_) + bytes_of(mat_) +
-                  bytes_of(motion_);
-  b += im.list.bytes() + im.carried.bytes() + bytes_of(im.x_build) + bytes_of(im.wall_hist) + bytes_of(im.wall_mask) +
+  std::size_t b = 0;
+  for_each_particle_array([&](auto array, auto, const char*, const char*, bool) { b += bytes_of(this->*array); });
+  b += im.list.bytes() + im.carried.bytes() + bytes_of(im.x_build) + bytes_of(im.wall_mask) +
        bytes_of(im.touch) + bytes_of(im.share) + bytes_of(im.routing.slot) + bytes_of(im.routing.park_start) +
        bytes_of(im.acc_f) + bytes_of(im.acc_t) +
        bytes_of(im.grid.cell_start);

@@ -21,6 +21,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -171,6 +172,13 @@ class Simulation {
   // must already hold the same materials, interactions and walls (as the scene builds
   // them from its config): a difference is refused with std::invalid_argument.
   void import_state(const SimulationState& s);
+  // The per-particle arrays a state carries, in the engine's list order (below):
+  // f(name, units, array). The checkpoint file stores each as /engine/<name>.
+  template <class F>
+  static void for_each_state_particle_array(SimulationState& s, F&& f) {
+    for_each_stored_particle_array(
+        [&](auto, auto stored, const char* name, const char* units, bool) { f(name, units, s.*stored); });
+  }
 
  private:
   struct Impl;  // neighbour lists, histories, scratch
@@ -195,7 +203,6 @@ class Simulation {
   void require_interactions(int m, const char* what);
   // x: the particle's position when the blow-up was detected (the force pass may have moved it since).
   [[noreturn]] void report_blow_up(std::size_t i, Vec3 x, double overlap, const std::string& partner) const;
-  PairConstants const& pair(int a, int b) const { return pc_[static_cast<std::size_t>(a) * n_mat_ + b]; }
 
   SimulationConfig cfg_;
   int threads_ = 1;
@@ -218,11 +225,49 @@ class Simulation {
   std::vector<Vec3> wall_force_;
 
   std::int64_t next_id_ = 0;
+  // Per-particle arrays (structure of arrays, index order); each is named once in
+  // for_each_particle_array below.
   std::vector<std::int64_t> id_;
   std::vector<Vec3> x_, v_, w_, f_, t_;
   std::vector<double> r_, m_, inv_m_, inv_inertia_;
   std::vector<int> mat_;
   std::vector<Motion> motion_;
+  std::vector<ContactHistory> wall_hist_;  // one row of walls_.size() per particle
+
+  // The registry of the per-particle arrays: each once, as f(engine array, its
+  // SimulationState member or Derived{}, name, units, per_wall). add_particle grows every
+  // array by one row, permute_particles (spatial re-sort, removal) reorders every array,
+  // memory_bytes counts every array, export_state / import_state copy the stored ones
+  // (and the checkpoint file writes them, for_each_state_particle_array) in this order;
+  // derived arrays are recomputed from material and radius (set_mass_properties). A row
+  // is one element, or walls_.size() elements where per_wall is true. A new per-particle
+  // quantity is its member, one line here, and (if stored) its SimulationState member.
+  // The force pass reads the arrays through plain pointers, never through this list.
+  struct Derived {};
+  template <class F>
+  static void for_each_particle_array(F&& f) {
+    f(&Simulation::id_, &SimulationState::id, "id", "1", false);
+    f(&Simulation::mat_, &SimulationState::material, "material", "1", false);
+    f(&Simulation::r_, &SimulationState::radius, "radius", "m", false);
+    f(&Simulation::motion_, &SimulationState::motion, "motion", "1", false);
+    f(&Simulation::x_, &SimulationState::x, "x", "m", false);
+    f(&Simulation::v_, &SimulationState::v, "v", "m/s", false);
+    f(&Simulation::w_, &SimulationState::w, "w", "rad/s", false);
+    f(&Simulation::f_, &SimulationState::f, "f", "N", false);
+    f(&Simulation::t_, &SimulationState::t, "t", "N m", false);
+    f(&Simulation::wall_hist_, &SimulationState::wall_history, "wall_history", kContactHistoryUnits, true);
+    f(&Simulation::m_, Derived{}, "mass", "kg", false);
+    f(&Simulation::inv_m_, Derived{}, "inverse_mass", "1/kg", false);
+    f(&Simulation::inv_inertia_, Derived{}, "inverse_inertia", "1/(kg m^2)", false);
+  }
+  template <class F>
+  static void for_each_stored_particle_array(F&& f) {
+    for_each_particle_array([&](auto array, auto stored, const char* name, const char* units, bool per_wall) {
+      if constexpr (!std::is_same_v<decltype(stored), Derived>) f(array, stored, name, units, per_wall);
+    });
+  }
+  std::size_t row_width(bool per_wall) const { return per_wall ? walls_.size() : 1; }
+  void set_mass_properties(std::size_t i);  // m_, inv_m_, inv_inertia_ from mat_ and r_
 
   std::unique_ptr<Impl> impl_;
 };

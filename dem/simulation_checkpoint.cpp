@@ -7,7 +7,6 @@
 
 #include "dem/simulation.hpp"
 #include "dem/simulation_impl.hpp"
-#include "dem/sphere_mass.hpp"
 
 namespace centrec::dem {
 
@@ -37,16 +36,8 @@ SimulationState Simulation::export_state() const {
   s.interactions = interactions_;
   for (const Wall& w : walls_) s.wall_origins.push_back(w.origin);
   s.wall_force = wall_force_;
-  s.id = id_;
-  s.material = mat_;
-  s.radius = r_;
-  s.motion = motion_;
-  s.x = x_;
-  s.v = v_;
-  s.w = w_;
-  s.f = f_;
-  s.t = t_;
-  s.wall_history = impl_->wall_hist;
+  for_each_stored_particle_array(
+      [&](auto array, auto stored, const char*, const char*, bool) { s.*stored = this->*array; });
   // Contacts live in the list, or (particles added/removed since) in the carried copy.
   const NeighbourList& list = dirty_ ? impl_->carried : impl_->list;
   for (std::size_t i = 0; i < list.rows(); ++i)
@@ -68,11 +59,9 @@ void Simulation::import_state(const SimulationState& s) {
     if (!same(s.interactions[k], interactions_[k])) refuse("interaction " + std::to_string(k) + " differs");
   if (s.wall_origins.size() != walls_.size() || s.wall_force.size() != walls_.size())
     refuse("walls " + std::to_string(s.wall_origins.size()) + " vs " + std::to_string(walls_.size()));
-  if (s.radius.size() != n) refuse("radius array length");
-  for (const auto* a : {&s.x, &s.v, &s.w, &s.f, &s.t})
-    if (a->size() != n) refuse("vector array length");
-  if (s.material.size() != n || s.motion.size() != n) refuse("material/motion array length");
-  if (s.wall_history.size() != n * walls_.size()) refuse("wall history size");
+  for_each_stored_particle_array([&](auto, auto stored, const char* name, const char*, bool per_wall) {
+    if ((s.*stored).size() != n * row_width(per_wall)) refuse(std::string(name) + " array length");
+  });
   if (!(s.dt > 0.0)) refuse("dt = " + std::to_string(s.dt));
 
   std::unordered_map<std::int64_t, std::int32_t> index_of_id;
@@ -102,25 +91,13 @@ void Simulation::import_state(const SimulationState& s) {
   time_ = s.time;
   step_ = s.step;
   insert_log_.clear();
-  id_ = s.id;
-  mat_ = s.material;
-  r_ = s.radius;
-  motion_ = s.motion;
-  x_ = s.x;
-  v_ = s.v;
-  w_ = s.w;
-  f_ = s.f;
-  t_ = s.t;
-  m_.resize(n);
-  inv_m_.resize(n);
-  inv_inertia_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {  // as add_particle computes them
-    const double mass = sphere_mass(materials_[static_cast<std::size_t>(mat_[i])].density, r_[i]);
-    m_[i] = mass;
-    inv_m_[i] = 1.0 / mass;
-    inv_inertia_[i] = 1.0 / (0.4 * mass * r_[i] * r_[i]);
-  }
-  impl_->wall_hist = s.wall_history;
+  for_each_particle_array([&](auto array, auto stored, const char*, const char*, bool per_wall) {
+    if constexpr (std::is_same_v<decltype(stored), Derived>)
+      (this->*array).resize(n * row_width(per_wall));  // filled below
+    else
+      this->*array = s.*stored;
+  });
+  for (std::size_t i = 0; i < n; ++i) set_mass_properties(i);  // as add_particle does
 
   // The pair histories as a carried list (row = lower index), for the rebuild to pick up.
   std::vector<std::vector<std::pair<std::int32_t, ContactHistory>>> rows(n);

@@ -1,5 +1,18 @@
 // The force pass of Simulation (docs/dem_physics.md): Hertz-Mindlin-EPSD2 for every
-// pair of the half neighbour list and every candidate wall, summed deterministically.
+// pair of the half neighbour list and every candidate wall, summed deterministically
+// (docs/architecture.md "Threads and determinism"). compute_forces works on ranges of
+// rows (one per thread), one row (particle i) at a time:
+//   1. ForcePass::fetch_ahead   the data the rows ahead will read, into cache
+//   2. ForcePass::pair_row      the contacts of i with its partners j > i: the owner's
+//                               share summed at once, the partner's routed (route_share)
+//   3. ForcePass::row_total     i's direct partner shares, its wall contacts
+//                               (wall_contacts) and gravity; then i is integrated
+//                               (ParticleFinish) unless a share of it is parked
+// then, once every range is done:
+//   4. ForcePass::parked_total  each parked particle: its shares summed, then integrated
+//   5. the per-block tallies (wall forces, counts, blow-ups) reduced in block order.
+// Each step's arithmetic is written once, in a fixed operation order: results are the
+// same bits for any thread count.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -10,13 +23,17 @@
 #include "dem/first_half_step.hpp"
 #include "dem/simulation_impl.hpp"
 
+// The pass's steps are inlined into its loops: no call per row or per list entry.
+#define CENTREC_INLINE [[gnu::always_inline]] inline
+
 namespace centrec::dem {
 
 // Rows beyond the list's reach at which the force pass fetches partner data ahead.
 constexpr long kPrefetchMargin = 256;
 // Rows ahead at which the pass fetches the row's own streams (list entries, histories,
-// wall data, f, t and integration data; its accumulators come with the partner data): at ~100-150 ns per row, 32 rows are well over a memory
-// latency ahead, and the few kB in flight stay inside L1 + L2.
+// wall data, f, t and integration data; its accumulators come with the partner data): at
+// ~100-150 ns per row, 32 rows are well over a memory latency ahead, and the few kB in
+// flight stay inside L1 + L2.
 constexpr long kRowFetchAhead = 32;
 
 namespace {
@@ -33,16 +50,249 @@ struct ParticleFinish {
   const Vec3* x_build = nullptr;
   Vec3 *x = nullptr, *v = nullptr, *w = nullptr;
 
-  double operator()(long i, Vec3 f, Vec3 t, BlockTally& tally) const {
+  CENTREC_INLINE double operator()(long i, Vec3 f, Vec3 t, BlockTally& tally) const {
     if (mot[i] == Motion::free) {
-      if ((!is_finite(f) || !is_finite(t) || !is_finite(x[i])) && tally.blowup_index < 0) {
-        tally.blowup_index = i;
-        tally.blowup_x = x[i];
-        tally.blowup_overlap = std::numeric_limits<double>::quiet_NaN();
-      }
+      if (!is_finite(f) || !is_finite(t) || !is_finite(x[i]))
+        tally.note_blow_up(i, x[i], std::numeric_limits<double>::quiet_NaN(), [] { return std::string(); });
       if (kick) half_kick(half, inv_m[i], inv_inertia[i], f, t, v[i], w[i]);  // integrate_second_half
     }
     return next ? first.advance(mot[i], inv_m[i], inv_inertia[i], f, t, x_build[i], x[i], v[i], w[i]) : 0.0;
+  }
+};
+
+// The arrays and constants of one force pass, as plain pointers (the loops index them
+// directly), and its steps for one row.
+struct ForcePass {
+  // Particles.
+  const Vec3 *X, *V, *Wv;
+  const double *R, *M;
+  const std::int64_t* ID;
+  const int* MAT;
+  const Motion* MOT;
+  Vec3 *F_out, *T_out;  // f_, t_: the completed force and torque
+  // Neighbour list and its per-entry state.
+  const std::uint32_t* start;
+  const std::int32_t* nbr;
+  ContactHistory* hist;
+  std::uint8_t* touch;  // entry in contact at the last pass (then hist may be non-zero)
+  // Partner routing (partner_routing.hpp).
+  const std::uint32_t* slot;
+  const std::uint32_t* park_start;
+  PartnerShare* share;
+  Vec3 *ACC_F, *ACC_T;  // direct shares, zero outside the pair pass
+  // Walls.
+  const Wall* walls;
+  std::size_t nw;
+  ContactHistory* whist;  // particles x walls
+  const std::uint32_t* wall_mask;
+  // Pair constants (materials x materials) and the step's constants.
+  const PairConstants* pc;
+  std::size_t n_mat;
+  PeriodicZ pz;
+  Vec3 g;
+  double dt, limit;
+  bool relative_rolling, update_history;
+  long n, ahead;
+  ParticleFinish finish;
+
+  const PairConstants& pair(int a, int b) const { return pc[static_cast<std::size_t>(a) * n_mat + b]; }
+
+  // 1. Speed: data fetched into cache before the rows read them. Partners' data are first
+  // read about list.reach rows ahead of the row being worked on, in cell runs that jump
+  // from one ring arc and cell row to the next, which the hardware prefetchers do not
+  // follow: a film larger than the cache then waits on memory at every first read.
+  // Fetching particle i + ahead at row i turns those reads into cache hits. The row's own
+  // streams are about twenty arrays walked at different paces (57 bytes per list entry,
+  // 1 to 24 bytes per particle), more than the hardware prefetchers track, so row
+  // i + kRowFetchAhead's lines of each are fetched too.
+  CENTREC_INLINE void fetch_ahead(long i) const {
+    if (const long p = i + ahead; p < n) {
+      __builtin_prefetch(X + p);
+      __builtin_prefetch(R + p);
+      __builtin_prefetch(ID + p);
+      __builtin_prefetch(MAT + p);
+      __builtin_prefetch(M + p);
+      __builtin_prefetch(V + p);
+      __builtin_prefetch(Wv + p);
+      __builtin_prefetch(ACC_F + p, 1);  // first written by the row that first names p
+      __builtin_prefetch(ACC_T + p, 1);
+    }
+    if (const long q = i + kRowFetchAhead; q < n) {
+      // Fixed counts, no loops: a row holds ~5 entries, whose histories span up to five
+      // lines from the line of its first; the next rows' fetches cover longer rows.
+      const std::uint32_t e0 = start[q];
+      // (Addresses as integers: past the list's end they are fetched, never dereferenced.)
+      const std::uintptr_t h = reinterpret_cast<std::uintptr_t>(hist + e0);
+      for (std::uintptr_t line = 0; line < 5; ++line)
+        __builtin_prefetch(reinterpret_cast<const void*>(h + 64 * line), 1);
+      __builtin_prefetch(nbr + e0);
+      __builtin_prefetch(slot + e0);
+      __builtin_prefetch(touch + e0, 1);
+      __builtin_prefetch(start + q + 1);
+      __builtin_prefetch(park_start + q + 1);
+      __builtin_prefetch(MOT + q);
+      __builtin_prefetch(wall_mask + q);
+      __builtin_prefetch(whist + static_cast<std::size_t>(q) * nw, 1);
+      __builtin_prefetch(F_out + q, 1);
+      __builtin_prefetch(T_out + q, 1);
+      __builtin_prefetch(finish.x_build + q);
+      __builtin_prefetch(finish.inv_m + q);
+      __builtin_prefetch(finish.inv_inertia + q);
+    }
+  }
+
+  // 2. The pairs of row i (partners j > i): the owner's share summed into F, T; the
+  // partner's share routed. Each pair in canonical operand order (lower id first): the
+  // result and the stored history do not depend on which of the two owns the row after a
+  // re-sort.
+  CENTREC_INLINE void pair_row(long i, Vec3& F, Vec3& T, BlockTally& tally) const {
+    const Vec3 xi = X[i];
+    const double ri = R[i];
+    const std::int64_t idi = ID[i];
+    for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
+      const std::int32_t j = nbr[e];
+      Vec3 d = xi - X[j];
+      d.z = pz.image(d.z);
+      const double rsum = ri + R[j];
+      const double dist2 = norm2(d);
+      if (dist2 >= rsum * rsum) {
+        if (touch[e]) forget(e);
+        continue;
+      }
+      const double dist = std::sqrt(dist2);
+      const double delta = rsum - dist;
+      if (!(delta <= limit * std::min(ri, R[j])))
+        tally.note_blow_up(i, xi, delta, [&] { return "particle id " + std::to_string(ID[j]); });
+      const bool i_first = idi < ID[j];
+      const long a = i_first ? i : j, c = i_first ? j : i;
+      const double ra = R[a], rc = R[c], ma = M[a], mc = M[c];
+      const Vec3 nrm = (1.0 / dist) * (i_first ? d : -d);
+      const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
+      const ContactInput in{delta,
+                            nrm,
+                            contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, nrm),
+                            Wv[a] - Wv[c],
+                            ra * rc / (ra + rc),
+                            ma * mc / (ma + mc),
+                            arm_a,
+                            arm_c};
+      const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
+      if (update_history) hist[e] = res.history;
+      Vec3 fj, tj;
+      if (i_first) {
+        F += res.force;
+        T += res.torque_i;
+        fj = -res.force;
+        tj = res.torque_j;
+      } else {
+        F -= res.force;
+        T += res.torque_j;
+        fj = res.force;
+        tj = res.torque_i;
+      }
+      route_share(e, j, fj, tj);
+      touch[e] = 1;
+      ++tally.pair_contacts;
+    }
+  }
+
+  // Speed: a pair that has just separated is forgotten (its history and parked share
+  // zeroed); the 1-byte touch flag says so without reading the 48-byte history.
+  CENTREC_INLINE void forget(std::uint32_t e) const {
+    touch[e] = 0;
+    hist[e] = ContactHistory{};
+    if (slot[e] != PartnerRouting::kDirect) share[slot[e]] = PartnerShare{};
+  }
+
+  // The partner's share of entry e: straight into its accumulator when this thread owns
+  // every row naming it, else parked in its slot (partner_routing.hpp). Either way the
+  // shares are summed in increasing row order.
+  CENTREC_INLINE void route_share(std::uint32_t e, long j, Vec3 fj, Vec3 tj) const {
+    if (const std::uint32_t s = slot[e]; s == PartnerRouting::kDirect) {
+      ACC_F[j] += fj;
+      ACC_T[j] += tj;
+    } else {
+      share[s] = {fj, tj};
+    }
+  }
+
+  // 3. Row i is done: its force and torque are the partners' direct shares (summed in row
+  // order, they come first) plus its own part (pairs, walls, gravity), stored in f_, t_.
+  // Rows name only partners of higher index, so a particle with no parked share has its
+  // whole force now and no later row reads it: it is integrated here, while its data are
+  // in cache (one sweep over the particle arrays per step). Returns the squared
+  // displacement of that integration (0 if it waits for the parked pass or has none).
+  CENTREC_INLINE double row_total(long i, Vec3 F, Vec3 T, BlockTally& tally) const {
+    const Vec3 acc_f = ACC_F[i], acc_t = ACC_T[i];
+    ACC_F[i] = {};
+    ACC_T[i] = {};
+    const bool direct = park_start[i] == park_start[i + 1];
+    if (MOT[i] != Motion::free) {  // carried by the drum: forces on it are not needed
+      F_out[i] = {};
+      T_out[i] = {};
+      return direct ? finish(i, Vec3{}, Vec3{}, tally) : 0.0;
+    }
+    wall_contacts(i, F, T, tally);
+    const Vec3 f = acc_f + (F + M[i] * g), t = acc_t + T;
+    F_out[i] = f;
+    T_out[i] = t;
+    return direct ? finish(i, f, t, tally) : 0.0;
+  }
+
+  // Contacts of free particle i with its candidate walls (wall_mask, set at each rebuild):
+  // the force on i into F, T, the reaction into the block's wall totals.
+  CENTREC_INLINE void wall_contacts(long i, Vec3& F, Vec3& T, BlockTally& tally) const {
+    const Vec3 xi = X[i];
+    const double ri = R[i];
+    std::uint32_t mask = wall_mask[i];
+    while (mask != 0u) {
+      const int wi = __builtin_ctz(mask);
+      mask &= mask - 1u;
+      const Wall& wall = walls[wi];
+      ContactHistory& h = whist[static_cast<std::size_t>(i) * nw + static_cast<std::size_t>(wi)];
+      double dist;
+      Vec3 nrm, point;
+      if (!wall_geometry(wall, xi, dist, nrm, point) || dist >= ri) {
+        h = ContactHistory{};
+        continue;
+      }
+      const double delta = ri - dist;
+      if (!(delta <= limit * ri)) tally.note_blow_up(i, xi, delta, [&] { return "wall " + std::to_string(wi); });
+      const double arm = ri - 0.5 * delta;
+      const ContactInput in{delta,
+                            nrm,
+                            contact_velocity(V[i] - wall_velocity_at(wall, point), Wv[i], Vec3{}, arm, 0.0, nrm),
+                            relative_rolling ? Wv[i] - wall.angular_velocity : Wv[i],
+                            ri,
+                            M[i],
+                            arm,
+                            0.0};
+      const ContactResult res = evaluate_contact(pair(MAT[i], wall.material), in, h, dt);
+      if (update_history) h = res.history;
+      F += res.force;
+      T += res.torque_i;
+      tally.wall_force[static_cast<std::size_t>(wi)] -= res.force;
+      ++tally.wall_contacts;
+    }
+  }
+
+  // 4. A parked particle, once every range is done: its shares summed in row order, then
+  // its own part (stored in f_, t_ by row_total), as for the direct ones; then integrated.
+  // Parked slots not in contact hold zeros: adding +0.0 leaves a sum bit for bit as
+  // skipping it does (the direct sums skip them), because a sum that starts at +0.0 can
+  // never be -0.0 in round-to-nearest; for the same reason a parked particle's own part,
+  // +0.0 + (F + m g) in row_total, adds as the direct one's F + m g does.
+  CENTREC_INLINE double parked_total(long j, BlockTally& tally) const {
+    if (MOT[j] == Motion::free) {
+      Vec3 sf{}, st{};
+      for (std::uint32_t k = park_start[j]; k < park_start[j + 1]; ++k) {
+        sf += share[k].force;
+        st += share[k].torque;
+      }
+      F_out[j] = sf + F_out[j];
+      T_out[j] = st + T_out[j];
+    }
+    return finish(j, F_out[j], T_out[j], tally);
   }
 };
 
@@ -54,247 +304,64 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   const long nblocks = (n + kBlock - 1) / kBlock;
   const std::size_t nw = walls_.size();
   if (im.tallies.size() < static_cast<std::size_t>(nblocks)) im.tallies.resize(static_cast<std::size_t>(nblocks));
-  const double dt = dt_;
-  const double limit = blowup_fraction_;
-  const bool relative_rolling = cfg_.wall_rolling == WallRolling::relative;
-  const PeriodicZ pz = im.pz;
-  const Vec3 g = cfg_.gravity;
-  const std::uint32_t* start = im.list.start.data();
-  const std::int32_t* nbr = im.list.nbr.data();
-  ContactHistory* hist = im.list.hist.data();
-  ContactHistory* whist = im.wall_hist.data();
-  std::uint8_t* touch = im.touch.data();
-  const std::uint32_t* wall_mask = im.wall_mask.data();
   // Row ranges of the pair pass: one per thread (results do not depend on their number).
   const long parts = n >= kMinParallelParticles ? std::max(1, threads_) : 1;
   if (im.routing.parts != parts) {
     im.routing = route_partner_shares(im.list, kBlock, parts);
-    im.share.assign(im.routing.parked(), Impl::PartnerShare{});
+    im.share.assign(im.routing.parked(), PartnerShare{});
   }
-  Impl::PartnerShare* share = im.share.data();
-  const std::uint32_t* slot = im.routing.slot.data();
-  Vec3 *ACC_F = im.acc_f.data(), *ACC_T = im.acc_t.data();
-  const Vec3 *X = x_.data(), *V = v_.data(), *Wv = w_.data();
-  const double *R = r_.data(), *M = m_.data();
-  const std::int64_t* ID = id_.data();
-  const int* MAT = mat_.data();
-  const Motion* MOT = motion_.data();
-  // Partners' data are first read about list.reach rows ahead of the row being worked on,
-  // in cell runs that jump from one ring arc and cell row to the next, which the hardware
-  // prefetchers do not follow: a film larger than the cache then waits on memory at every
-  // first read. Fetching particle i + ahead at row i turns those reads into cache hits.
-  const long ahead = im.list.reach + kPrefetchMargin;
 
-  ParticleFinish finish;
+  ForcePass pass{x_.data(), v_.data(), w_.data(), r_.data(), m_.data(), id_.data(), mat_.data(), motion_.data(),
+                 f_.data(), t_.data(),
+                 im.list.start.data(), im.list.nbr.data(), im.list.hist.data(), im.touch.data(),
+                 im.routing.slot.data(), im.routing.park_start.data(), im.share.data(), im.acc_f.data(),
+                 im.acc_t.data(),
+                 walls_.data(), nw, wall_hist_.data(), im.wall_mask.data(),
+                 pc_.data(), n_mat_, im.pz, cfg_.gravity, dt_, blowup_fraction_,
+                 cfg_.wall_rolling == WallRolling::relative, update_history,
+                 n, im.list.reach + kPrefetchMargin, ParticleFinish{}};
+  ParticleFinish& finish = pass.finish;
   finish.kick = after != AfterForces::nothing;
   finish.next = after == AfterForces::second_and_next_first_half;
-  finish.half = 0.5 * dt;
+  finish.half = 0.5 * dt_;
   if (finish.next) finish.first = begin_first_half();
-  finish.mot = MOT;
+  finish.mot = motion_.data();
   finish.inv_m = inv_m_.data();
   finish.inv_inertia = inv_inertia_.data();
   finish.x_build = im.x_build.data();
   finish.x = x_.data();
   finish.v = v_.data();
   finish.w = w_.data();
-  const std::uint32_t* park_start = im.routing.park_start.data();
 
-  // Pass 1: each pair once, in the row of its lower index. The row owner's share is summed
-  // at once; the partner's share is added to its accumulator or parked (im.routing). Rows
-  // name only partners of higher index, so at the end of its row a particle with direct
-  // shares only has its whole force and no later row reads it: it is finished there, while
-  // its data are in cache (one sweep over the particle arrays per step).
+  // Pass 1: each range of rows on its thread; each pair once, in the row of its lower
+  // index (steps 1-3 above).
   double max_d2 = 0.0;
 #pragma omp parallel for schedule(static, 1) num_threads(threads_) if (parts > 1) reduction(max : max_d2)
   for (long part = 0; part < parts; ++part)
   for (long b = first_block_of_part(nblocks, parts, part); b < first_block_of_part(nblocks, parts, part + 1); ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+    tally.reset(nw);
     double block_d2 = 0.0;
-    tally.wall_force.assign(nw, Vec3{});
-    tally.pair_contacts = tally.wall_contacts = 0;
-    tally.blowup_index = -1;
     const long i_end = std::min(n, (b + 1) * kBlock);
     for (long i = b * kBlock; i < i_end; ++i) {
-      if (const long p = i + ahead; p < n) {
-        __builtin_prefetch(X + p);
-        __builtin_prefetch(R + p);
-        __builtin_prefetch(ID + p);
-        __builtin_prefetch(MAT + p);
-        __builtin_prefetch(M + p);
-        __builtin_prefetch(V + p);
-        __builtin_prefetch(Wv + p);
-        __builtin_prefetch(ACC_F + p, 1);  // first written by the row that first names p
-        __builtin_prefetch(ACC_T + p, 1);
-      }
-      // The row's own streams: about twenty arrays walked at different paces (57 bytes per
-      // list entry, 1 to 24 bytes per particle), more than the hardware prefetchers track,
-      // so a film beyond the cache waited on the next line of one stream after another.
-      if (const long q = i + kRowFetchAhead; q < n) {
-        // Fixed counts, no loops: a row holds ~5 entries, whose histories span up to five
-        // lines from the line of its first; the next rows' fetches cover longer rows.
-        const std::uint32_t e0 = start[q];
-        // (Addresses as integers: past the list's end they are fetched, never dereferenced.)
-        const std::uintptr_t h = reinterpret_cast<std::uintptr_t>(hist + e0);
-        for (std::uintptr_t line = 0; line < 5; ++line)
-          __builtin_prefetch(reinterpret_cast<const void*>(h + 64 * line), 1);
-        __builtin_prefetch(nbr + e0);
-        __builtin_prefetch(slot + e0);
-        __builtin_prefetch(touch + e0, 1);
-        __builtin_prefetch(start + q + 1);
-        __builtin_prefetch(park_start + q + 1);
-        __builtin_prefetch(MOT + q);
-        __builtin_prefetch(wall_mask + q);
-        __builtin_prefetch(whist + static_cast<std::size_t>(q) * nw, 1);
-        __builtin_prefetch(f_.data() + q, 1);
-        __builtin_prefetch(t_.data() + q, 1);
-        __builtin_prefetch(finish.x_build + q);
-        __builtin_prefetch(finish.inv_m + q);
-        __builtin_prefetch(finish.inv_inertia + q);
-      }
-      const Vec3 xi = X[i];
-      const double ri = R[i];
-      const std::int64_t idi = ID[i];
+      pass.fetch_ahead(i);
       Vec3 F{}, T{};
-      for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
-        const std::int32_t j = nbr[e];
-        Vec3 d = xi - X[j];
-        d.z = pz.image(d.z);
-        const double rsum = ri + R[j];
-        const double dist2 = norm2(d);
-        if (dist2 >= rsum * rsum) {
-          if (touch[e]) {  // just separated: forget the pair (reads 1 byte, not the history)
-            touch[e] = 0;
-            hist[e] = ContactHistory{};
-            if (slot[e] != PartnerRouting::kDirect) share[slot[e]] = Impl::PartnerShare{};
-          }
-          continue;
-        }
-        const double dist = std::sqrt(dist2);
-        const double delta = rsum - dist;
-        if (!(delta <= limit * std::min(ri, R[j])) && tally.blowup_index < 0) {
-          tally.blowup_index = i;
-          tally.blowup_x = xi;
-          tally.blowup_overlap = delta;
-          tally.blowup_partner = "particle id " + std::to_string(ID[j]);
-        }
-        // Canonical operand order (lower id first): the result and the stored history do
-        // not depend on which of the two is the row owner after a re-sort.
-        const bool i_first = idi < ID[j];
-        const long a = i_first ? i : j, c = i_first ? j : i;
-        const double ra = R[a], rc = R[c], ma = M[a], mc = M[c];
-        const Vec3 nrm = (1.0 / dist) * (i_first ? d : -d);
-        const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
-        const ContactInput in{delta,
-                              nrm,
-                              contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, nrm),
-                              Wv[a] - Wv[c],
-                              ra * rc / (ra + rc),
-                              ma * mc / (ma + mc),
-                              arm_a,
-                              arm_c};
-        const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
-        if (update_history) hist[e] = res.history;
-        Vec3 fj, tj;
-        if (i_first) {
-          F += res.force;
-          T += res.torque_i;
-          fj = -res.force;
-          tj = res.torque_j;
-        } else {
-          F -= res.force;
-          T += res.torque_j;
-          fj = res.force;
-          tj = res.torque_i;
-        }
-        if (const std::uint32_t s = slot[e]; s == PartnerRouting::kDirect) {
-          ACC_F[j] += fj;
-          ACC_T[j] += tj;
-        } else {
-          share[s] = {fj, tj};
-        }
-        touch[e] = 1;
-        ++tally.pair_contacts;
-      }
-      // The partners' direct shares, summed in row order, come first (partner_routing.hpp).
-      const Vec3 acc_f = ACC_F[i], acc_t = ACC_T[i];
-      ACC_F[i] = {};
-      ACC_T[i] = {};
-      const bool direct = park_start[i] == park_start[i + 1];
-      if (MOT[i] != Motion::free) {  // carried by the drum: forces on it are not needed
-        f_[i] = {};
-        t_[i] = {};
-        if (direct) block_d2 = std::max(block_d2, finish(i, Vec3{}, Vec3{}, tally));
-        continue;
-      }
-      std::uint32_t mask = wall_mask[i];
-      while (mask != 0u) {
-        const int wi = __builtin_ctz(mask);
-        mask &= mask - 1u;
-        const Wall& wall = walls_[static_cast<std::size_t>(wi)];
-        ContactHistory& h = whist[static_cast<std::size_t>(i) * nw + static_cast<std::size_t>(wi)];
-        double dist;
-        Vec3 nrm, point;
-        if (!wall_geometry(wall, xi, dist, nrm, point) || dist >= ri) {
-          h = ContactHistory{};
-          continue;
-        }
-        const double delta = ri - dist;
-        if (!(delta <= limit * ri) && tally.blowup_index < 0) {
-          tally.blowup_index = i;
-          tally.blowup_x = xi;
-          tally.blowup_overlap = delta;
-          tally.blowup_partner = "wall " + std::to_string(wi);
-        }
-        const double arm = ri - 0.5 * delta;
-        const ContactInput in{delta,
-                              nrm,
-                              contact_velocity(V[i] - wall_velocity_at(wall, point), Wv[i], Vec3{}, arm, 0.0, nrm),
-                              relative_rolling ? Wv[i] - wall.angular_velocity : Wv[i],
-                              ri,
-                              M[i],
-                              arm,
-                              0.0};
-        const ContactResult res = evaluate_contact(pair(MAT[i], wall.material), in, h, dt);
-        if (update_history) h = res.history;
-        F += res.force;
-        T += res.torque_i;
-        tally.wall_force[static_cast<std::size_t>(wi)] -= res.force;
-        ++tally.wall_contacts;
-      }
-      const Vec3 f = acc_f + (F + M[i] * g), t = acc_t + T;
-      f_[i] = f;
-      t_[i] = t;
-      if (direct) block_d2 = std::max(block_d2, finish(i, f, t, tally));
+      pass.pair_row(i, F, T, tally);
+      block_d2 = std::max(block_d2, pass.row_total(i, F, T, tally));
     }
     max_d2 = std::max(max_d2, block_d2);
   }
-  // Pass 2: the parked particles, once every range is done: their shares summed in row
-  // order, then their own part, as the direct ones (partner_routing.hpp); then finished.
-  // Parked slots not in contact hold zeros: adding +0.0 leaves a sum bit for bit as
-  // skipping it does (the direct sums skip them), because a sum that starts at +0.0 can
-  // never be -0.0 in round-to-nearest; for the same reason a parked particle's own part,
-  // +0.0 + (F + m g) in pass 1, adds as the direct one's F + m g does.
+  // Pass 2: the parked particles (step 4).
   if (im.routing.parked() > 0) {
 #pragma omp parallel for schedule(static) num_threads(threads_) if (parts > 1) reduction(max : max_d2)
     for (long b = 0; b < nblocks; ++b) {
       BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
       const long j_end = std::min(n, (b + 1) * kBlock);
-      for (long j = b * kBlock; j < j_end; ++j) {
-        if (park_start[j] == park_start[j + 1]) continue;
-        if (MOT[j] == Motion::free) {
-          Vec3 sf{}, st{};
-          for (std::uint32_t k = park_start[j]; k < park_start[j + 1]; ++k) {
-            sf += share[k].force;
-            st += share[k].torque;
-          }
-          f_[j] = sf + f_[j];
-          t_[j] = st + t_[j];
-        }
-        max_d2 = std::max(max_d2, finish(j, f_[j], t_[j], tally));
-      }
+      for (long j = b * kBlock; j < j_end; ++j)
+        if (pass.park_start[j] != pass.park_start[j + 1]) max_d2 = std::max(max_d2, pass.parked_total(j, tally));
     }
   }
-  // Fixed-order reduction over blocks.
+  // Step 5: fixed-order reduction over blocks.
   for (auto& f : wall_force_) f = {};
   im.pair_contacts = im.wall_contacts = 0;
   for (long b = 0; b < nblocks; ++b) {

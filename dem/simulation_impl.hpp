@@ -24,6 +24,27 @@ struct BlockTally {
   Vec3 blowup_x;           // its position then
   double blowup_overlap = 0.0;
   std::string blowup_partner;
+
+  void reset(std::size_t walls) {
+    wall_force.assign(walls, Vec3{});
+    pair_contacts = wall_contacts = 0;
+    blowup_index = -1;
+  }
+  // Keeps the block's first blow-up: particle i at x, its overlap (NaN: a non-finite
+  // state) and what it overlaps (partner(), a string, built only for the first).
+  template <class Partner>
+  void note_blow_up(long i, Vec3 x, double overlap, Partner partner) {
+    if (blowup_index >= 0) return;
+    blowup_index = i;
+    blowup_x = x;
+    blowup_overlap = overlap;
+    blowup_partner = partner();
+  }
+};
+
+// A partner's share of one pair, parked until the parked pass sums it (partner_routing.hpp).
+struct PartnerShare {
+  Vec3 force, torque;
 };
 
 struct Simulation::Impl {
@@ -38,7 +59,6 @@ struct Simulation::Impl {
   // rigid rotation), so a co-rotating film does not trigger rebuilds at omega R / skin.
   bool drum_frame = false;
   double angle_since_build = 0.0;
-  std::vector<ContactHistory> wall_hist;    // N x walls
   std::vector<std::uint32_t> wall_mask;     // candidate walls per particle
   std::vector<BlockTally> tallies;
   std::vector<std::uint8_t> touch;  // per list entry: in contact at the last force pass (then hist may be non-zero)
@@ -47,9 +67,6 @@ struct Simulation::Impl {
   // parked ones to `share` (grouped by partner; zero while the entry is not in contact).
   PartnerRouting routing;
   std::vector<Vec3> acc_f, acc_t;
-  struct PartnerShare {
-    Vec3 force, torque;
-  };
   std::vector<PartnerShare> share;
   std::size_t rebuilds = 0, pair_contacts = 0, wall_contacts = 0;
 };

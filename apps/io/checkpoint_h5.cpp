@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "dem/simulation.hpp"
 #include "io/h5_file.hpp"
 
 namespace centrec::io {
@@ -122,14 +123,20 @@ void vec3s(IO& io, const std::string& path, std::vector<dem::Vec3>& v, const std
 }
 
 template <class IO, class T>
-void integers(IO& io, const std::string& path, std::vector<T>& v) {
-  records(io, path, v, 1, "1", [](const T& a, std::vector<double>& o) { o.push_back(static_cast<double>(a)); },
+void integers(IO& io, const std::string& path, std::vector<T>& v, const std::string& units = "1") {
+  records(io, path, v, 1, units, [](const T& a, std::vector<double>& o) { o.push_back(static_cast<double>(a)); },
           [](const double* p, T& a) { a = static_cast<T>(static_cast<long long>(p[0])); });
 }
 
 template <class IO>
+void doubles(IO& io, const std::string& path, std::vector<double>& v, const std::string& units) {
+  records(io, path, v, 1, units, [](double a, std::vector<double>& o) { o.push_back(a); },
+          [](const double* p, double& a) { a = p[0]; });
+}
+
+template <class IO>
 void histories(IO& io, const std::string& path, std::vector<dem::ContactHistory>& v) {
-  records(io, path, v, 6, "m (shear 0-2), N m (roll 3-5)",
+  records(io, path, v, 6, dem::kContactHistoryUnits,
           [](const dem::ContactHistory& h, std::vector<double>& o) {
             o.insert(o.end(), {h.shear.x, h.shear.y, h.shear.z, h.roll.x, h.roll.y, h.roll.z});
           },
@@ -152,17 +159,19 @@ void visit_engine(IO& io, dem::SimulationState& s) {
           [](const double* p, dem::PairInteraction& m) { m = {p[0], p[1], p[2]}; });
   vec3s(io, g + "/wall_origins", s.wall_origins, "m");
   vec3s(io, g + "/wall_force", s.wall_force, "N");
-  integers(io, g + "/id", s.id);
-  integers(io, g + "/material", s.material);
-  records(io, g + "/radius", s.radius, 1, "m", [](double a, std::vector<double>& o) { o.push_back(a); },
-          [](const double* p, double& a) { a = p[0]; });
-  integers(io, g + "/motion", s.motion);
-  vec3s(io, g + "/x", s.x, "m");
-  vec3s(io, g + "/v", s.v, "m/s");
-  vec3s(io, g + "/w", s.w, "rad/s");
-  vec3s(io, g + "/f", s.f, "N");
-  vec3s(io, g + "/t", s.t, "N m");
-  histories(io, g + "/wall_history", s.wall_history);
+  // The per-particle arrays, as the engine lists them (id, material, ..., wall_history).
+  dem::Simulation::for_each_state_particle_array(s, [&](const char* name, const char* units, auto& array) {
+    using T = typename std::decay_t<decltype(array)>::value_type;
+    const std::string path = g + "/" + name;
+    if constexpr (std::is_same_v<T, dem::Vec3>)
+      vec3s(io, path, array, units);
+    else if constexpr (std::is_same_v<T, double>)
+      doubles(io, path, array, units);
+    else if constexpr (std::is_same_v<T, dem::ContactHistory>)
+      histories(io, path, array);
+    else
+      integers(io, path, array, units);
+  });
   std::vector<dem::ContactHistory> h;
   std::vector<std::int64_t> ids;
   if (!IO::reading)
@@ -226,10 +235,7 @@ void visit_scene(IO& io, dem::scene::SceneState& s) {
 template <class IO>
 void visit_snapshot(IO& io, const std::string& g, film::ParticleColumns& c) {
   io.number(g, "time", c.time);
-  auto col = [&](const char* name, std::vector<double>& v, const char* units) {
-    records(io, g + "/" + name, v, 1, units, [](double a, std::vector<double>& o) { o.push_back(a); },
-            [](const double* p, double& a) { a = p[0]; });
-  };
+  auto col = [&](const char* name, std::vector<double>& v, const char* units) { doubles(io, g + "/" + name, v, units); };
   col("x", c.x, "m");
   col("y", c.y, "m");
   col("z", c.z, "m");

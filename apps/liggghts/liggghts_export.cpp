@@ -84,7 +84,7 @@ std::string data_file(const dem::scene::CentrecScene& scene, const LiggghtsBox& 
 // washboard of that height. The static Hertz overlap of a wall-layer particle under its
 // centrifugal load is about 1e-3 d, so facets within 1e-2 d shook the stuck layer loose
 // (smooth-wall lip 3 d drum: -10.3 % holdup and a wedge-shaped film against the native
-// engine, -1.8 % within 1e-3 d; tests/bench/results/engine_crosscheck.md).
+// engine, -1.8 % within 1e-3 d; apps/bench/results/engine_crosscheck.md).
 void plan_drum_mesh(const SceneConfig& c, double d, LiggghtsDeckPlan& plan) {
   const double R = 0.5 * c.drum.diameter;
   const double L = c.slice.enabled ? c.slice.length : c.drum.length;

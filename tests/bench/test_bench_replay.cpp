@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "tests/bench/bench_options.hpp"
-#include "tests/bench/centrec_run.hpp"
-#include "tests/bench/film_initial_state.hpp"
+#include "bench/bench_options.hpp"
+#include "bench/centrec_run.hpp"
+#include "bench/film_initial_state.hpp"
 
 namespace centrec::bench {
 namespace {

@@ -1,5 +1,5 @@
 // Rough speed probe of the engine on a settled dense film (not a test; the project's
-// benchmark against LIGGGHTS lives in tests/bench).
+// benchmark against LIGGGHTS lives in apps/bench).
 // Usage: dem_speed_probe N [steps] [skin_fraction] [settle_steps]
 #include <omp.h>
 
