@@ -58,7 +58,7 @@ DemCase read_dem_case(MapReader root) {
   s.drum.diameter = drum.number("diameter", s.drum.diameter, Range::positive(), "m");
   s.drum.length = drum.number("length", s.drum.length, Range::positive(), "m");
   s.drum.tilt = drum.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg") * deg;
-  s.drum.omega = drum.number("speed_rpm", 160.08, Range::any(), "rpm") * 2.0 * M_PI / 60.0;
+  s.drum.omega = drum.number("speed_rpm", 160.08, Range::closed(-1e5, 1e5), "rpm") * 2.0 * M_PI / 60.0;
   s.drum.back_plate = drum.boolean("back_plate", true);
   s.drum.lip_height = drum.number("outlet_lip_height_d", 0.0, Range::closed(0.0, 0.25 * s.drum.diameter / d)) * d;
   drum.finish();

@@ -151,6 +151,7 @@ void read_solver(MapReader r, ThermalCase& c) {
   c.steady.tolerance = r.number("steady_tolerance", 1e-10, Range::closed(1e-14, 1e-2));
   c.steady.newton_first = r.boolean("newton_first", true);
   c.steady.max_time_factor = r.number("max_time_scales", 1e4, Range::closed(1.0, 1e9));
+  c.steady.max_wall_seconds = r.number("max_wall_time", 600.0, Range::closed(1.0, 1e7), "s");
   c.transient_settings.integrator = in;
   c.transient_settings.integrator.rtol = r.number("transient_rtol", 1e-6, Range::closed(1e-12, 1e-2));
   r.finish();
@@ -171,6 +172,13 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   MapReader g = t.child("grid");
   c.grid.nz = static_cast<int>(g.integer("nz", 200, 2, 100000));
   if (!c.grid.lumped) c.grid.nxi = static_cast<int>(g.integer("nxi", 40, 2, 2000));
+  // The band Jacobian holds about 3 nxi + 1 entries per cell: refuse a grid it cannot hold.
+  const double cells = static_cast<double>(c.grid.nz) * (c.grid.lumped ? 1 : c.grid.nxi);
+  const double bytes = cells * (3.0 * (c.grid.lumped ? 1 : c.grid.nxi) + 1.0) * 8.0;
+  if (bytes > 4e9)
+    g.fail(c.grid.lumped ? "nz" : "nxi", "a grid of " + std::to_string(static_cast<long long>(cells)) +
+                                             " cells needs about " + std::to_string(static_cast<long long>(bytes / 1e9)) +
+                                             " GB for its band Jacobian (at most 4): use fewer cells");
   g.finish();
   c.grid.advection = t.choice("advection", "upwind", {"upwind", "van_leer"}) == "upwind" ? th::Advection::upwind
                                                                                          : th::Advection::van_leer;

@@ -12,7 +12,9 @@
 #include "dem/scene/scene_sampler.hpp"
 #include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
+#include "config/case_checks.hpp"
 #include "runs/dem_run_report.hpp"
+#include "runs/interrupt.hpp"
 #include "runs/progress_meter.hpp"
 
 namespace centrec::runs {
@@ -23,10 +25,11 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
 
   dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(dc.scene);
   auto& sim = scene.simulation();
-  std::fprintf(stderr, "centrec dem: %s%s\n  %s\n  dt = %.3g s, %lld glued + %lld free particles, %d thread(s)\n",
+  std::fprintf(stderr, "centrec dem: %s%s\n  %s\n  %s\n  %lld glued + %lld free particles, %d thread(s)\n",
                cf.path.c_str(), ck ? (" resumed at t = " + std::to_string(sim.time()) + " s (" + ck->phase + ")").c_str() : "",
-               sim.time_step_advice().report().c_str(), sim.dt(), static_cast<long long>(scene.glued_particles()),
-               static_cast<long long>(scene.free_particles()), sim.threads());
+               sim.time_step_advice().report().c_str(), config::time_step_statement(sim.time_step_advice(), dc.scene.dt).c_str(),
+               static_cast<long long>(scene.glued_particles()), static_cast<long long>(scene.free_particles()),
+               sim.threads());
 
   const double period = scene.turn_period();
   const double total = dc.run.duration + dc.sampling.turns * period;
@@ -70,6 +73,14 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     io::write_checkpoint(out_dir, c);
     checkpoint_at = std::chrono::steady_clock::now();
   };
+  // Ctrl-C / SIGTERM: checkpoint at the next safe point (where the periodic ones are written) and stop.
+  const InterruptGuard interrupt;
+  auto stop_if_interrupted = [&](const std::string& phase) {
+    if (const int signal = InterruptGuard::received()) {
+      checkpoint(phase, true);
+      throw RunInterrupted(signal, sim.time(), out_dir);
+    }
+  };
 
   // Spin-up (filling, reaching steady state), then sampling turn by turn.
   if (!ck || ck->phase == "spin-up") {
@@ -77,6 +88,7 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
       advance([&] { scene.advance(std::min(chunk, dc.run.duration - sim.time())); });
       sim.rebuild_lists();
       checkpoint("spin-up", false);
+      stop_if_interrupted("spin-up");
     }
   }
   auto keep = [&](dem::scene::SnapshotArrays s) {
@@ -96,6 +108,7 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     ++sampled;
     sim.rebuild_lists();
     checkpoint("sampling", false);
+    stop_if_interrupted("sampling");
   }
   if (sim.time() > snapshots.back().data.time) keep_snapshot();
   progress.update(sim.time(), sim.time() / period, particle_steps, true);
