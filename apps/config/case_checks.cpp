@@ -85,7 +85,7 @@ std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived) {
   const auto& s = dc.scene;
   const double d = s.particle.diameter, R = 0.5 * s.drum.diameter, L = s.drum.length;
   const std::string drum_key = derived ? "receiver.dem_diameter_d" : "dem.drum.diameter";
-  const std::string drum_is = derived ? "the DEM drum derived from receiver.dem_diameter_d" : "dem.drum.diameter";
+  const std::string drum_is = derived ? "the DEM drum derived from receiver.dem_diameter_d" : "the drum diameter";
   if (!(R > 10.0 * d))
     return CaseProblem{drum_key, drum_is + " = " + g(s.drum.diameter) + " m must exceed 20 particle diameters (" +
                                      g(20.0 * d) + " m)"};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -93,6 +94,15 @@ YAML::Node parse_case(const std::string& text, const std::string& source) {
   if (bad != std::string::npos)
     throw ConfigError(source + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(bad), '\n')) +
                       ": the file is not valid UTF-8 text (byte " + std::to_string(bad) + ")");
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02x", c);
+      throw ConfigError(source + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(i), '\n')) +
+                        ": a control character (byte " + hex + ") in the text");
+    }
+  }
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -130,6 +140,9 @@ std::string closest_word(const std::string& word, const std::vector<std::string>
     const std::size_t d = distance(word, c);
     if (d < best_d) best_d = d, best = c;
   }
+  if (best.empty() && word.size() >= 3)  // a shortened key: tilt for tilt_deg
+    for (const auto& c : candidates)
+      if (c.size() > word.size() && distance(word, c.substr(0, word.size())) == 0) return c;
   return best;
 }
 

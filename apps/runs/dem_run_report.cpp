@@ -122,6 +122,12 @@ void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf
   std::printf("holdup %.4f kg (%lld particles), inlet %.3f g/s, outlet %.3f g/s over the last %.2f s\n", r.holdup_kg,
               static_cast<long long>(r.free_particles), fed_rate * 1e3, out_rate * 1e3, window);
   std::printf("%.3g particle-steps/s, wall time %.1f s; wrote %s/summary.json\n", rate, r.wall_time, out_dir.c_str());
+  const double asked = dc.scene.feeder.mass_flow;
+  if (dc.scene.feeder.enabled && !dc.scene.slice.enabled && r.feeder_deferred > 0 && fed_rate < 0.9 * asked)
+    std::fprintf(stderr,
+                 "centrec dem: warning: the feeder delivered %.4g g/s of the %.4g g/s asked (%lld insertions "
+                 "deferred: its region was full); enlarge dem.feeder's region or lower the mass flow\n",
+                 fed_rate * 1e3, asked * 1e3, static_cast<long long>(r.feeder_deferred));
   if (r.fields.snapshots > 0)
     std::printf("film thickness %.2f +- %.2f d over %zu turns\n", r.fields.mean_thickness.mean_d,
                 r.fields.mean_thickness.std_d, r.fields.turns);

@@ -24,7 +24,7 @@ void fake_run(const std::string& dir, bool) {
 }  // namespace
 
 TEST(DemCacheIntegrity, AFlippedBitInACachedFileIsRefusedNamingIt) {
-  const std::string cache = testing::fresh_dir("cache_integrity") + "/cache";
+  const std::string cache = centrec::testing::fresh_dir("cache_integrity") + "/cache";
   int runs = 0;
   auto run = [&](const std::string& dir, bool resume) {
     ++runs;
@@ -53,7 +53,7 @@ TEST(DemCacheIntegrity, AFlippedBitInACachedFileIsRefusedNamingIt) {
 }
 
 TEST(DemCacheIntegrity, AFailedRunLeavesNoEmptyFolders) {
-  const std::string root = testing::fresh_dir("cache_cleanup");
+  const std::string root = centrec::testing::fresh_dir("cache_cleanup");
   const std::string cache = root + "/new/cache";
   EXPECT_THROW(runs::cached_dem_run(cache, "abc",
                                     [](const std::string& dir, bool) {

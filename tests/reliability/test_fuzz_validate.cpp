@@ -59,6 +59,7 @@ struct Mutator {
   std::string apply(const std::string& category, const std::string& text) {
     std::vector<std::string> v = lines_of(text);
     const std::vector<std::size_t> c = content_lines(v);
+    if (c.empty()) return text + "x: 1\n";  // a case truncated to nothing: give it a line
     std::string& line = v[any(c)];
     if (category == "number") {
       static const std::vector<std::string> bad = {"0", "-1", "1e300", "-1e300", "1e-300", "nan", "inf", "-inf", ".nan",
