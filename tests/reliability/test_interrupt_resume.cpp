@@ -90,3 +90,53 @@ TEST(InterruptResume, SigintCheckpointsAndTheResumedRunEqualsTheWholeOne) {
   std::printf("%zu values bitwise equal; the resumed run ended at t = %.4f s\n", compared, t_end);
   std::filesystem::remove_all(dir);
 }
+
+namespace {
+// The one entry CACHE/<key> a coupled run made.
+std::string cache_entry(const std::string& cache) {
+  for (const auto& e : std::filesystem::directory_iterator(cache))
+    if (e.is_directory() && e.path().filename().string().find(".tmp") == std::string::npos) return e.path().string();
+  return "";
+}
+}  // namespace
+
+TEST(InterruptResume, SigintDuringTheDemOfARunAndTheSameCommandAgainEqualsTheWholeRun) {
+  const std::string dir = centrec::testing::fresh_dir("interrupt_run");
+  const std::string kCase = CENTREC_SOURCE_DIR "/tests/coupling/small_coupled.yaml";
+  const auto t0 = std::chrono::steady_clock::now();
+  const BinaryRun w = run_binary({"run", kCase, "--out", dir + "/whole", "--cache", dir + "/cache_whole", "--no-plots"}, 600.0);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+
+  std::mt19937_64 rng(2828);
+  const double at = std::uniform_real_distribution<double>(0.3, 0.6)(rng) * wall;
+  const std::vector<std::string> cmd = {"run", kCase, "--out", dir + "/stopped", "--cache", dir + "/cache", "--no-plots"};
+  const BinaryRun s = run_binary(cmd, 600.0, at);
+  std::printf("whole run %.2f s; SIGINT at %.2f s; stderr:\n%s\n", wall, at, s.err.c_str());
+  ASSERT_EQ(s.exit_code, 130) << s.err;
+  EXPECT_NE(s.err.find("continue with the same command"), std::string::npos) << s.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/stopped")) << "the empty output folder was left behind";
+  const BinaryRun r = run_binary(cmd, 600.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("continuing the interrupted DEM run"), std::string::npos) << r.err;
+
+  const std::string a = cache_entry(dir + "/cache_whole"), b = cache_entry(dir + "/cache");
+  ASSERT_FALSE(a.empty());
+  ASSERT_FALSE(b.empty());
+  std::size_t compared = 0;
+  for (const char* p : {"/mass_flow/time", "/mass_flow/out", "/film/thickness_mean", "/film/axial_velocity_mean"}) {
+    const auto x = dataset(a, p), y = dataset(b, p);
+    ASSERT_EQ(x.size(), y.size()) << p;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (x[i] != x[i] && y[i] != y[i]) continue;
+      ASSERT_EQ(std::memcmp(&x[i], &y[i], sizeof(double)), 0) << p << "[" << i << "]";
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 50u);
+  const auto ta = centrec::io::H5File::open_read(dir + "/whole/results.h5").read("/steady/T");
+  const auto tb = centrec::io::H5File::open_read(dir + "/stopped/results.h5").read("/steady/T");
+  ASSERT_EQ(ta.size(), tb.size());
+  EXPECT_EQ(std::memcmp(ta.data(), tb.data(), ta.size() * sizeof(double)), 0);
+  std::filesystem::remove_all(dir);
+}
