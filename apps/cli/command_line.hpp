@@ -11,11 +11,12 @@
 
 namespace centrec::cli {
 
-// A command line that cannot run: a missing or unknown option, a value out of range.
-// `main` prints it as "centrec <command>: usage error: ..." and exits with 2.
-class UsageError : public std::invalid_argument {
+// A command line that cannot run: a missing or unknown option, a value out of range (a
+// configuration error given on the command line). `main` prints it as
+// "centrec <command>: usage error: ..." and exits with 2.
+class UsageError : public config::ConfigError {
  public:
-  using std::invalid_argument::invalid_argument;
+  using config::ConfigError::ConfigError;
 };
 
 // True if args contain -h or --help.

@@ -150,7 +150,8 @@ std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived) {
   return std::nullopt;
 }
 
-std::optional<CaseProblem> coupled_run_problem(const DemCase& dem, const ThermalCase& thermal) {
+std::optional<CaseProblem> coupled_run_problem(const DemCase& dem, const ThermalCase& thermal,
+                                               const ReceiverCase* receiver) {
   const auto& m = thermal.model.material;
   const double d = dem.scene.particle.diameter, rho = dem.scene.particle.material.density;
   if (std::abs(m.d / d - 1.0) > 1e-9)
@@ -161,6 +162,11 @@ std::optional<CaseProblem> coupled_run_problem(const DemCase& dem, const Thermal
     return CaseProblem{"thermal.material.rho_s", "the thermal particles (rho_s = " + g(m.rho_s) +
                                                      " kg/m3) differ from the DEM's (dem.particles.density = " +
                                                      g(rho) + " kg/m3): make them equal"};
+  const double D = receiver ? receiver->op.diameter : dem.scene.drum.diameter;
+  const auto& cav = thermal.model.cavity;
+  if (cav.enabled && cav.aperture_diameter > D * (1 + 1e-9))
+    return CaseProblem{"thermal.radiation.aperture_diameter", "exceeds the diameter " + g(D) + " m of the " +
+                                                                  (receiver ? "receiver" : "DEM drum")};
   if (!(dem.sampling.turns > 0.0))
     return CaseProblem{"dem.sampling.turns", "must be > 0 in a coupled case: the film comes from the DEM's sampled turns"};
   return std::nullopt;

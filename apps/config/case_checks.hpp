@@ -49,8 +49,10 @@ double dem_time_step(const DemCase& dc);
 std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived = false);
 
 // The checks of a coupled run (`centrec run`, film from the DEM) beyond the DEM's: the
-// same particles on both sides, sampled turns to take the film from.
-std::optional<CaseProblem> coupled_run_problem(const DemCase& dem, const ThermalCase& thermal);
+// same particles on both sides, sampled turns to take the film from, a cavity aperture
+// within the drum the film is scaled to (the receiver's, or the DEM drum's without one).
+std::optional<CaseProblem> coupled_run_problem(const DemCase& dem, const ThermalCase& thermal,
+                                               const ReceiverCase* receiver);
 
 // A run of more time steps than this cannot finish (1e10 steps of even one particle are
 // days of wall time): a typo in run.dt or run.duration, refused before the run.

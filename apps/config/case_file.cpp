@@ -41,7 +41,7 @@ CaseFile read_case(MapReader root, const std::string& path) {
     c.thermal = std::move(t);
   }
   if (c.dem && c.thermal && c.thermal->film_source == "dem")
-    if (const auto p = coupled_run_problem(*c.dem, *c.thermal)) root.fail_path(p->key, p->message);
+    if (const auto p = coupled_run_problem(*c.dem, *c.thermal, c.receiver ? &*c.receiver : nullptr)) root.fail_path(p->key, p->message);
   if (root.has("sweep")) c.sweep = read_sweep(root.child("sweep"));
   root.finish();
   c.resolved_yaml = root.resolved_text();

@@ -6,6 +6,7 @@
 #include "io/film_field_h5.hpp"
 #include "io/flux_table_csv.hpp"
 #include "thermal/analytic_film.hpp"
+#include "thermal/film_operator.hpp"
 
 namespace centrec::config {
 
@@ -200,6 +201,8 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
     cav.convection_correlation = rad.choice("convection", "correlation", {"correlation", "h_conv"}) == "correlation";
     cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg") * 3.14159265358979323846 / 180.0;
   }
+  if (cav.enabled && c.film_source != "dem" && cav.aperture_diameter > c.film.drum_diameter * (1 + 1e-9))
+    rad.fail("aperture_diameter", "exceeds the drum diameter " + std::to_string(c.film.drum_diameter) + " m of the film");
   rad.finish();
   MapReader s = t.child("surface");
   if (cav.enabled && s.has("loss_factor"))
@@ -229,6 +232,14 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
     t.fail("flux", "has a time history (flux.time) but the case has no thermal.transient section to run it");
   }
   t.finish();
+  // What the thermal run checks as it sets up (grid, film, cavity), before any work.
+  if (c.film_source != "dem") {
+    try {
+      thermal::FilmOperator check(c.film, m, c.grid);
+    } catch (const std::invalid_argument& e) {
+      root.fail("thermal", e.what());
+    }
+  }
 }
 
 std::string case_directory(const std::string& case_path) {
