@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "config/case_checks.hpp"
@@ -171,4 +173,15 @@ TEST(CaseRefusals, ADirectoryOrMissingFileIsNamed) {
   } catch (const config::ConfigError& e) {
     EXPECT_HAS(std::string(e.what()), "no such case file");
   }
+}
+
+TEST(CaseRefusals, ThermalSetUpChecksAreMadeByTheReader) {
+  // The cavity case with an aperture wider than its drum, and a grid no band solver holds:
+  // the thermal run refused them only as it set up; now the reader does.
+  std::ifstream in(CENTREC_SOURCE_DIR "/cases/thermal_centrec_cavity.yaml");
+  const std::string cavity((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_HAS(error_of(with(cavity, "aperture_diameter: 0.7", "aperture_diameter: 5.0")),
+             "thermal.radiation.aperture_diameter: exceeds the drum diameter");
+  EXPECT_HAS(error_of(with(cavity, "grid: {nz: 200, nxi: 40}", "grid: {nz: 100000, nxi: 2000}")),
+             "GB for its band Jacobian");
 }
