@@ -106,3 +106,17 @@ TEST(CliUsage, AFailedRunLeavesNoEmptyFolders) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/out")) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/cache")) << r.err;
 }
+
+TEST(CliUsage, AFeedTheFeederCannotDeliverIsWarned) {
+  // 0.3 kg/s is below the densest-packing bound the case check refuses above, but far more
+  // than random insertion into the feeder region achieves: the run says so.
+  const std::string dir = temp_dir("cli_feed");
+  std::ofstream(dir + "/case.yaml") << "dem:\n  drum: {diameter: 0.03, length: 0.04275, speed_rpm: 320.16}\n"
+                                       "  feeder: {mass_flow: 0.3}\n"
+                                       "  run: {duration: 0.02, dt: 2.0e-5, threads: 1, checkpoint_interval: 0}\n";
+  const BinaryRun r = run_binary({"dem", dir + "/case.yaml", "--out", dir + "/out"}, 60.0);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: the feeder delivered"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("of the 300 g/s asked"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
