@@ -1,6 +1,8 @@
 #include "config/case_thermal.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <stdexcept>
 
 #include "io/film_field_h5.hpp"
@@ -234,10 +236,26 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   t.finish();
   // What the thermal run checks as it sets up (grid, film, cavity), before any work.
   if (c.film_source != "dem") {
+    std::unique_ptr<thermal::FilmOperator> op;
     try {
-      thermal::FilmOperator check(c.film, m, c.grid);
+      op = std::make_unique<thermal::FilmOperator>(c.film, m, c.grid);
     } catch (const std::invalid_argument& e) {
       root.fail("thermal", e.what());
+    }
+    // A film that, all at the top of the model's temperature range, would still absorb more
+    // than it carries away and loses has no steady state the model can reach: the march
+    // would only slow down toward it (docs/reliability.md).
+    op->freeze_inputs(true);
+    const double T_top = kTemperature.hi;
+    const thermal::FilmBalance hot = op->balance(0.0, op->uniform_state(T_top).data());
+    const double away = hot.carried + hot.emitted + hot.convected + hot.wall;
+    if (hot.absorbed > away) {
+      char why[320];
+      std::snprintf(why, sizeof why,
+                    "the film has no steady state below %.0f K: all at %.0f K it would absorb %.4g W but carry "
+                    "away and lose only %.4g W (a flux too high for its flow %.4g kg/s and its losses)",
+                    T_top, T_top, hot.absorbed, away, hot.mass_flow);
+      root.fail("thermal", why);
     }
   }
 }

@@ -33,10 +33,10 @@ TEST(ThermalLimits, AZeroFluxCaseConverges) {
   EXPECT_GT(r.balance.T_out, c.model.T_in - 50.0);
 }
 
-TEST(ThermalLimits, AFilmThatCannotReachASteadyStateIsStoppedWithAReason) {
+TEST(ThermalLimits, AFilmThatCannotReachASteadyStateIsRefusedOrStopped) {
   // 20 MW/m2 on a film that hardly moves, with no loss: it would heat without bound.
   const std::string dir = temp_dir("stiff");
-  const config::ThermalCase c = config::read_thermal_case(write_case(dir, R"(title: stiff
+  const std::string stiff = R"(title: stiff
 film:
   analytic: {thickness: 1.3e-3, u_surface: 1.0e-6}
 thermal:
@@ -46,7 +46,19 @@ thermal:
   surface: {loss_factor: 0, h_conv: 0}
   wall: {adiabatic: true}
   solver: {max_wall_time: 2}
-)"));
+)";
+  // Refused as it is read: all at 5000 K it would still absorb more than it carries and loses.
+  try {
+    config::read_thermal_case(write_case(dir, stiff));
+    ADD_FAILURE() << "a film heated without bound was accepted";
+  } catch (const config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("the film has no steady state below 5000 K"), std::string::npos) << e.what();
+  }
+  // Given to the solver anyway (read without flux, then heated), the wall-time budget stops it.
+  std::string cold = stiff;
+  cold.replace(cold.find("q: 2.0e7"), 8, "q: 0");
+  config::ThermalCase c = config::read_thermal_case(write_case(dir, cold));
+  c.model.flux.q = 2.0e7;
   const auto t0 = std::chrono::steady_clock::now();
   try {
     runs::run_thermal_case(c);
