@@ -50,6 +50,15 @@ TEST(DemCacheIntegrity, AFlippedBitInACachedFileIsRefusedNamingIt) {
     EXPECT_NE(msg.find("remove " + first.dir), std::string::npos) << msg;
   }
   EXPECT_EQ(runs, 1);
+  // A corrupt summary.json is named too (it used to fail in the JSON parser, unnamed).
+  fake_run(first.dir, false);
+  std::ofstream(first.dir + "/summary.json") << "{\"holdup_kg\": 0.0";
+  try {
+    runs::cached_dem_run(cache, "abc", run);
+    ADD_FAILURE() << "a damaged summary.json was used";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(first.dir + "/summary.json: checksum mismatch"), std::string::npos) << e.what();
+  }
 }
 
 TEST(DemCacheIntegrity, AFailedRunLeavesNoEmptyFolders) {
