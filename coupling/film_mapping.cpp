@@ -53,8 +53,14 @@ MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut) {
     to.push_back(bins.back());
   };
 
-  f.z = a.ring_z;
   for (std::size_t i = 0; i < a.ring_z.size(); ++i) {
+    // A drum's sections next to the feeder and the outlet hold the small drum's own inflow
+    // and outflow (particles falling in from the feeder, the film leaving over the edge),
+    // not the developed film: the thermal film takes the sections of z/L 0.2-0.8, held
+    // toward the ends, as the solid-fraction sampler's window does.
+    const double zl = a.ring_z[i] / a.length;
+    if (a.ring_z.size() > 1 && (zl < kDevelopedFrom || zl > kDevelopedTo)) continue;
+    f.z.push_back(a.ring_z[i]);
     std::vector<double> phi(nb), phi_sd(nb), u(nb), u_sd(nb);
     for (std::size_t k = 0; k < nb; ++k) {
       const double glued = a.phi_glued.empty() ? 0.0 : a.phi_glued[k];
@@ -62,7 +68,10 @@ MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut) {
       phi[k] = std::min(p, 0.74);  // the densest sphere packing
       phi_sd[k] = a.ring_phi_std[i][k];
       // Mass-weighted velocity of everything in the bin (glued spheres at rest included).
-      u[k] = p > 0.0 ? a.ring_flux[i][k] / p : 0.0;
+      // A bin at rest can average a slightly negative speed (particles jostling back and
+      // forth); the thermal film flows toward the outlet only, so it is taken as at rest (the
+      // flux closure counts what that leaves out).
+      u[k] = p > 0.0 ? std::max(0.0, a.ring_flux[i][k] / p) : 0.0;
       u_sd[k] = p > 0.0 ? a.ring_flux_std[i][k] / p : 0.0;
     }
     // The film: bins from the wall up with phi >= phi_cut, without a gap.

@@ -8,7 +8,8 @@
 // mass-weighted mean over the whole circumference, stationary and moving zones together.
 // The thermal film reaches from the wall to the top of the last bin, counted from the wall
 // without a gap, whose solid fraction is at least `phi_cut`: the flowing layer, not the
-// eqs 4-7 thickness (reported beside it). Nothing is rescaled here: the flow the film
+// eqs 4-7 thickness (reported beside it). A drum contributes its developed sections (z/L
+// 0.2-0.8), held toward the ends; a slice its one section. Nothing is rescaled: the flow the film
 // carries is checked against the DEM's measured flow by film_mass_flow.hpp.
 #include <vector>
 
@@ -20,6 +21,8 @@ namespace centrec::coupling {
 // The solid fraction below which the DEM's top bins are the loose particles above the
 // film, not film (docs/coupling.md "Film as measured": what the cut leaves out is reported).
 constexpr double kFilmSolidFractionCut = 0.1;
+// A drum's developed film: the axial sections used, as fractions of its length.
+constexpr double kDevelopedFrom = 0.2, kDevelopedTo = 0.8;
 
 struct FilmCut {
   double phi_cut = 0.0;

@@ -31,7 +31,7 @@ double scale_particle_count(double n_actual, double actual_diameter, double targ
 // The laws hold while D >> d: below this drum diameter over particle diameter the film is
 // another regime (the whole circumference slides, the film thickens), measured in
 // docs/validity_threshold.md. Coupled runs refuse a smaller DEM drum unless told otherwise.
-constexpr double kMinimumDrumDiameterOverD = 60.0;
+constexpr double kMinimumDrumDiameterOverD = 80.0;
 // "" when D/d >= the threshold, else the sentence that says why D/d is not valid.
 std::string scale_down_validity(double drum_diameter, double particle_diameter);
 

@@ -71,7 +71,18 @@ void FilmField::check() const {
       throw std::invalid_argument("film field: thickness exceeds the last eta point (section " +
                                   std::to_string(i) + ")");
   }
+  // Bounds of a physical film (the ranges of film.analytic): a field beyond them is a
+  // damaged or mistaken file, not a film.
+  for (std::size_t i = 0; i < nz(); ++i)
+    if (!std::isfinite(z[i]) || !(t[i] <= 0.5))
+      throw std::invalid_argument("film field: section " + std::to_string(i) + " has z = " + std::to_string(z[i]) +
+                                  " m, t = " + std::to_string(t[i]) + " m (z must be finite, t at most 0.5 m)");
   for (std::size_t k = 0; k < n; ++k) {
+    if (!(u[k] <= 100.0))
+      throw std::invalid_argument("film field: axial velocity " + std::to_string(u[k]) +
+                                  " m/s is not that of a particle film (at most 100 m/s)");
+    if (!(D[k] <= 1.0))
+      throw std::invalid_argument("film field: dispersion " + std::to_string(D[k]) + " m2/s is beyond 1 m2/s");
     if (!(phi[k] > 0.0 && phi[k] < 1.0))
       throw std::invalid_argument("film field: solid fraction must be in (0, 1), got " + std::to_string(phi[k]));
     if (!(u[k] >= 0.0))

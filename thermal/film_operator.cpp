@@ -383,10 +383,14 @@ double FilmOperator::steady_residual(double t, const double* y) {
   if (cavity_) update_cavity(y, in);
   double sum = 0.0;
   for (long p = 0; p < n; ++p) sum += std::abs(cell_residual(static_cast<int>(p), y, props_.data(), in));
-  // Scale: the absorbed power, or if there is none the power of a 1 K rise of the flow.
+  // Scale: the absorbed power, at least the power of a 1 K rise of the flow. Without
+  // flux, the power the flow carries above its coldest surroundings (what it can lose):
+  // a 1 K scale there asks the residual to resolve below the round-off of the losses.
   double scale = 0.0;
   for (int i = 0; i < grid_.nz; ++i) scale += model_.material.alpha * q_column_[i] * in.flux_factor * grid_.dz;
-  scale = std::max(scale, grid_.mass_flux * in.flow_factor * model_.heat.cp(model_.T_in) * 1.0);
+  const double sink = std::min({model_.surface.T_env, model_.surface.T_air, model_.wall.T_amb});
+  const double dT = scale > 0.0 ? 1.0 : std::max(1.0, model_.T_in - sink);
+  scale = std::max(scale, grid_.mass_flux * in.flow_factor * model_.heat.cp(model_.T_in) * dT);
   if (!(scale > 0.0)) {
     // Neither flux nor flow (a resting film with sources): heating the film by 1 K over
     // its conduction time.

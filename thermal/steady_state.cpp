@@ -5,6 +5,7 @@
 #include <sunlinsol/sunlinsol_band.h>
 #include <sunmatrix/sunmatrix_band.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -108,9 +109,46 @@ int newton_polish(OdeSystem& sys, std::vector<double>& y, double& residual, cons
   SUNContext_Free(&ctx);
   return it;
 }
+// The system with a wall-clock budget: past the deadline its right-hand side and Jacobian
+// fail, which stops CVODE within a few steps; solve_steady then reports the budget.
+class Budgeted : public OdeSystem {
+ public:
+  Budgeted(OdeSystem& sys, double seconds)
+      : sys_(sys),
+        deadline_(std::chrono::steady_clock::now() +
+                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds))) {}
+  bool expired() const { return std::chrono::steady_clock::now() > deadline_; }
+  long size() const override { return sys_.size(); }
+  long lower_bandwidth() const override { return sys_.lower_bandwidth(); }
+  long upper_bandwidth() const override { return sys_.upper_bandwidth(); }
+  bool rhs(double t, const double* y, double* ydot) override { return !expired() && sys_.rhs(t, y, ydot); }
+  bool jacobian(double t, const double* y, const double* fy, const BandEntrySink& sink) override {
+    return !expired() && sys_.jacobian(t, y, fy, sink);
+  }
+  double steady_residual(double t, const double* y) override { return sys_.steady_residual(t, y); }
+  double time_scale() const override { return sys_.time_scale(); }
+  int low_rank_jacobian(double t, const double* y, std::vector<double>& U, std::vector<double>& V) override {
+    return sys_.low_rank_jacobian(t, y, U, V);
+  }
+
+ private:
+  OdeSystem& sys_;
+  std::chrono::steady_clock::time_point deadline_;
+};
+
+[[noreturn]] void out_of_time(double seconds, double t, double residual, double tolerance) {
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "no steady state within the wall-time budget of %.4g s (thermal.solver.max_wall_time): marched "
+                "%.4g s, scaled residual %.3g > tolerance %.3g; the operating point may be far from any steady "
+                "state (a flux the flow cannot carry away, a film that hardly moves)",
+                seconds, t, residual, tolerance);
+  throw SolverError(buf);
+}
 }  // namespace
 
-SteadyResult solve_steady(OdeSystem& sys, const std::vector<double>& y0, const SteadySettings& s) {
+SteadyResult solve_steady(OdeSystem& outer, const std::vector<double>& y0, const SteadySettings& s) {
+  Budgeted sys(outer, s.max_wall_seconds);
   SteadyResult r;
   r.y = y0;
   r.residual = sys.steady_residual(0.0, r.y.data());
@@ -146,7 +184,13 @@ SteadyResult solve_steady(OdeSystem& sys, const std::vector<double>& y0, const S
     }
     if (restart) cv.reinit(t, r.y);
     restart = false;
-    cv.advance(t_next, r.y);
+    if (sys.expired()) out_of_time(s.max_wall_seconds, t, r.residual, s.tolerance);
+    try {
+      cv.advance(t_next, r.y);
+    } catch (const SolverError&) {
+      if (sys.expired()) out_of_time(s.max_wall_seconds, t, r.residual, s.tolerance);
+      throw;
+    }
     t = t_next;
     t_next *= 2.0;
     r.residual = sys.steady_residual(t, r.y.data());

@@ -20,6 +20,10 @@ struct SteadySettings {
   // factorisations instead of one per few BDF steps); marching remains the fallback.
   bool newton_first = true;
   int max_newton_first = 25;
+  // Wall-clock budget of the whole solve, s: a march that cannot reach a steady state in it
+  // (a film heated far beyond any physical temperature marches ever more slowly) is stopped
+  // with a SolverError saying so, instead of running for hours.
+  double max_wall_seconds = 600.0;
   IntegratorSettings integrator{1e-5, 1e-3, 50000, 5};
 };
 
@@ -32,7 +36,8 @@ struct SteadyResult {
   SolverStats stats;
 };
 
-// Throws SolverError if no steady state is reached.
+// Throws SolverError if no steady state is reached (within max_time_factor time scales of
+// marching and max_wall_seconds of wall time).
 SteadyResult solve_steady(OdeSystem& system, const std::vector<double>& y0, const SteadySettings& settings);
 
 }  // namespace centrec::thermal

@@ -3,10 +3,12 @@
 #include <optional>
 #include <stdexcept>
 
+#include "cli/case_overrides.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/dem_engine_options.hpp"
 #include "cli/plot_scripts.hpp"
+#include "config/case_checks.hpp"
 #include "config/case_file.hpp"
 #include "io/atomic_write.hpp"
 #include "io/checkpoint_h5.hpp"
@@ -14,6 +16,7 @@
 #include "liggghts/dem_liggghts_run.hpp"
 #include "runs/dem_case_run.hpp"
 #include "runs/dem_run_report.hpp"
+#include "runs/interrupt.hpp"
 
 namespace centrec::cli {
 
@@ -22,8 +25,7 @@ namespace {
 struct DemOptions {
   std::string case_path, out_dir = "out/dem", resume_dir;
   bool no_plots = false;
-  int threads = -1;         // -1 = from the case
-  double duration = -1.0;   // -1 = from the case
+  config::Overrides overrides;  // --threads, --duration
   DemEngineOptions engine;
 };
 
@@ -34,42 +36,52 @@ void print_dem_help() {
       "                  [--wall-rolling-model relative|liggghts] [--no-plots]\n"
       "       centrec dem --resume DIR [--threads N]\n\n"
       "Runs the DEM of the CentRec drum (or periodic slice) described by the case's\n"
-      "`dem:` section and writes DIR/summary.json (headline figures and the resolved\n"
+      "`dem:` section (the drum `receiver:` derives when it gives dem_diameter_d, as `centrec\n"
+      "run` does) and writes DIR/summary.json (headline figures and the resolved\n"
       "configuration), DIR/dem.h5 (mass flows, averaged film fields, particle snapshots;\n"
       "units as attributes), DIR/dem.xmf and DIR/drum.xmf (open in ParaView), DIR/mass_flow.csv\n"
       "and the paper's figures (apps/plot_dem.py): fig2_mass_flow.png (outlet flow vs time),\n"
       "fig3_film_thickness.png (thickness along z), fig6_velocity_profiles.png (the nine\n"
       "profiles) and solid_fraction.png (--no-plots: none).\n"
-      "--threads and --duration override run.threads and run.duration.\n"
+            "units as attributes), DIR/dem.xmf (open in ParaView) and DIR/mass_flow.csv.\n"
+      "--threads (0-1024, 0 = all cores) and --duration (s) override run.threads and\n"
+      "run.duration; the resolved configuration in the outputs and the checkpoint holds them.\n"
       "--engine liggghts runs the same case on LIGGGHTS 3.8 (`mpirun -np N liggghts`, N = --ranks;\n"
       "--mpirun srun for a cluster launcher) in DIR/liggghts and reads its dumps into the same\n"
       "samplers and outputs; settings LIGGGHTS cannot express are refused (see export-liggghts).\n"
       "--wall-rolling-model overrides contacts.wall_rolling_model (liggghts: LIGGGHTS' form).\n\n"
       "Every run.checkpoint_interval seconds of wall time (default 300; 0 = off) and at the\n"
-      "end the run writes DIR/checkpoint.h5 (atomically). --resume DIR continues a killed\n"
-      "run from it with the case stored there (a CASE.yaml given too must match it); the\n"
+      "end the run writes DIR/checkpoint.h5 (atomically); Ctrl-C or SIGTERM writes one at the\n"
+      "next safe point (the end of a spin-up chunk or of a sampled turn) and stops (a second\n"
+      "Ctrl-C stops at once). --resume DIR continues a stopped or killed run from it with the\n"
+      "case stored there, --duration included (a CASE.yaml given too must match it); the\n"
       "result is bitwise the same as the uninterrupted run's. A killed sampling turn is\n"
       "sampled again from its start.\n");
 }
 
 DemOptions parse(const Args& args) {
   DemOptions o;
+  int threads = 0;
+  double duration = 0.0;
   CommandLine app("dem");
   app.add_option("CASE", o.case_path);
   app.add_option("--out", o.out_dir);
   app.add_option("--resume", o.resume_dir);
-  app.add_option("--threads", o.threads);
-  app.add_option("--duration", o.duration);
+  CLI::Option* t = app.add_option("--threads", threads)->check(integer_in(0, 1024));
+  CLI::Option* d = app.add_option("--duration", duration)->check(number_in(config::Range::positive(), "s"));
   app.add_flag("--no-plots", o.no_plots);
   add_engine_options(app, o.engine);
   app.read(args);
+  if (t->count()) o.overrides.threads = threads;
+  if (d->count()) o.overrides.duration = duration;
   if (!o.resume_dir.empty()) {
-    if (o.engine.engine != "centrec") throw std::invalid_argument("--resume is for the native engine (centrec) only");
-    if (o.duration > 0.0) throw std::invalid_argument("--duration cannot change a resumed run (it is in the checkpoint's case)");
+    if (o.engine.engine != "centrec") throw UsageError("--resume is for the native engine (centrec) only");
+    if (o.overrides.duration)
+      throw UsageError("--duration cannot change a resumed run: it continues to the run.duration stored in " +
+                       io::checkpoint_path(o.resume_dir) + " (the first run's --duration, if it had one)");
     o.out_dir = o.resume_dir;
   }
-  if (o.case_path.empty() && o.resume_dir.empty())
-    throw std::invalid_argument("no case file given (centrec dem --help)");
+  if (o.case_path.empty() && o.resume_dir.empty()) throw UsageError("no case file given (centrec dem --help)");
   return o;
 }
 
@@ -84,26 +96,40 @@ int cmd_dem(const Args& args) {
   // A resumed run takes its case from the checkpoint (a case file given too must match).
   std::optional<io::RunCheckpoint> ck;
   if (!opt.resume_dir.empty()) ck = io::read_checkpoint(opt.resume_dir);
-  const config::CaseFile cf = ck ? config::read_case_text(ck->resolved_yaml, ck->case_path) : config::read_case_file(opt.case_path);
-  if (ck && !opt.case_path.empty() && config::read_case_file(opt.case_path).resolved_yaml != ck->resolved_yaml)
-    throw std::invalid_argument(opt.case_path + " does not match the case stored in " + io::checkpoint_path(opt.resume_dir) +
-                                "; resume without the case file, or start a new run");
+  config::CaseFile cf = ck ? config::read_case_text(ck->resolved_yaml, ck->case_path) : config::read_case_file(opt.case_path);
+  if (!cf.dem) throw std::invalid_argument(cf.path + " has no `dem:` section");
+  if (ck && !opt.case_path.empty()) {
+    // The stored case holds the first run's --duration and --threads: compare with those.
+    config::Overrides stored;
+    stored.duration = cf.dem->run.duration;
+    stored.threads = cf.dem->scene.threads;
+    if (config::with_overrides(config::read_case_file(opt.case_path), stored).resolved_yaml != cf.resolved_yaml)
+      throw std::invalid_argument(opt.case_path + " does not match the case stored in " +
+                                  io::checkpoint_path(opt.resume_dir) +
+                                  "; resume without the case file, or start a new run");
+  }
   if (ck && ck->code_version != centrec::io::code_version())
     std::fprintf(stderr, "centrec dem: warning: checkpoint written by %s, resuming with %s\n", ck->code_version.c_str(),
                  centrec::io::code_version());
-  if (!cf.dem) throw std::invalid_argument(cf.path + " has no `dem:` section");
-  config::DemCase dc = *cf.dem;
-  if (opt.threads >= 0) dc.scene.threads = opt.threads;
-  if (opt.duration > 0.0) dc.run.duration = opt.duration;
+  // The command-line values enter the resolved case (outputs and checkpoint record what
+  // ran) and pass the same checks as the case file's.
+  if (opt.overrides.threads || opt.overrides.duration) cf = checked_overrides(cf, opt.overrides);
+  config::DemCase dc = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, {});
   if (!opt.engine.wall_rolling_model.empty()) apply_wall_rolling_model(dc, opt.engine.wall_rolling_model);
-  if (opt.engine.engine == "liggghts") {
-    liggghts::LiggghtsLaunch launch;
-    launch.ranks = opt.engine.ranks;
-    launch.mpirun = opt.engine.mpirun;
-    launch.liggghts = opt.engine.liggghts;
-    runs::run_dem_case(cf, dc, opt.out_dir, liggghts::liggghts_engine(launch));
-  } else {
-    runs::run_dem_case(cf, dc, opt.out_dir, runs::native_engine(ck));
+  const io::OutputFolder out(opt.out_dir);
+  try {
+    if (opt.engine.engine == "liggghts") {
+      liggghts::LiggghtsLaunch launch;
+      launch.ranks = opt.engine.ranks;
+      launch.mpirun = opt.engine.mpirun;
+      launch.liggghts = opt.engine.liggghts;
+      runs::run_dem_case(cf, dc, opt.out_dir, liggghts::liggghts_engine(launch));
+    } else {
+      runs::run_dem_case(cf, dc, opt.out_dir, runs::native_engine(ck));
+    }
+  } catch (const runs::RunInterrupted& e) {
+    std::fprintf(stderr, "centrec dem: %s\n  continue with: centrec dem --resume %s\n", e.what(), opt.out_dir.c_str());
+    return 128 + e.signal();
   }
   if (!opt.no_plots) run_plot_script("centrec dem", "plot_dem.py", {opt.out_dir});
   return 0;

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "cli/case_overrides.hpp"
 #include "cli/command_line.hpp"
 #include "cli/plot_scripts.hpp"
 #include "cli/commands.hpp"
@@ -12,6 +13,7 @@
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
 #include "runs/provenance.hpp"
+#include "runs/interrupt.hpp"
 #include "runs/thermal_output.hpp"
 
 namespace centrec::cli {
@@ -28,7 +30,7 @@ void print_run_help() {
       "against the DEM's measured flow (flux closure, 5 %%), scaled up to the receiver when the\n"
       "case has one, the case's mass flow imposed by one velocity factor, then the thermal\n"
       "model of `thermal:` (docs/coupling.md).\n"
-      "Refused unless allowed: a DEM drum below D/d = 60, the scale-down laws' validity\n"
+      "Refused unless allowed: a DEM drum below D/d = 80, the scale-down laws' validity\n"
       "threshold (docs/validity_threshold.md; --allow-small-drum), and a DEM film that is not\n"
       "at steady flow or misses the flux closure (--allow-unsteady); allowed, they are\n"
       "warnings in the output and in summary.json \"warnings\".\n"
@@ -65,9 +67,10 @@ int cmd_run(const Args& args) {
   app.add_option("CASE", case_path)->required();
   app.add_option("--out", out_dir)->required();
   app.add_option("--cache", o.cache_dir);
-  app.add_option("--speed-rpm", o.speed_rpm);
-  app.add_option("--mass-flow", o.mass_flow);
-  app.add_option("--threads", o.threads);
+  // The ranges of receiver.speed_rpm and receiver.mass_flow (config/case_receiver.cpp).
+  app.add_option("--speed-rpm", o.speed_rpm)->check(number_in(config::Range::open_closed(0.0, 1e5), "rpm"));
+  app.add_option("--mass-flow", o.mass_flow)->check(number_in(config::Range::open_closed(0.0, 1e4), "kg/s"));
+  app.add_option("--threads", o.threads)->check(integer_in(0, 1024));
   app.add_flag("--no-plots", no_plots);
   app.add_flag("--allow-small-drum", o.allow_small_drum,
                "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
@@ -77,11 +80,21 @@ int cmd_run(const Args& args) {
   const bool plots = !no_plots;
   if (o.cache_dir.empty()) o.cache_dir = parent_of(out_dir) + "/dem-cache";
   const config::CaseFile cf = config::read_case_file(case_path);
-  io::ensure_directory(out_dir);
-  const runs::CoupledRun r = runs::run_coupled_case(cf, o);
+  const config::Overrides overrides = runs::run_overrides(o);
+  if (cf.dem && cf.thermal && cf.thermal->film_source == "dem") checked_dem(cf, overrides);
+  const io::OutputFolder out(out_dir);
+  runs::CoupledRun r;
+  try {
+    r = runs::run_coupled_case(cf, o);
+  } catch (const runs::RunInterrupted& e) {
+    std::fprintf(stderr, "centrec run: %s\n  continue with the same command: its DEM resumes from that checkpoint\n",
+                 e.what());
+    return 128 + e.signal();
+  }
   runs::write_coupled_h5(out_dir, r, runs::case_provenance(cf.path, cf.resolved_yaml));
   nlohmann::json s = runs::coupled_summary(r);
   s["resolved_config"] = cf.resolved_yaml;
+  if (!flags_text(overrides).empty()) s["command_line_overrides"] = flags_text(overrides);
   io::write_json_file(out_dir + "/summary.json", s);
 
   const auto& b = r.result.balance;

@@ -5,6 +5,7 @@
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "config/case_thermal.hpp"
+#include "io/atomic_write.hpp"
 #include "io/summary_json.hpp"
 #include "runs/thermal_case_run.hpp"
 #include "runs/thermal_output.hpp"
@@ -12,7 +13,7 @@
 namespace centrec::cli {
 
 int cmd_thermal(const Args& args) {
-  if (wants_help(args) || args.empty()) {
+  if (wants_help(args)) {
     std::printf(
         "usage: centrec thermal CASE.yaml --out DIR\n\n"
         "Solves the energy equation of the particle film under concentrated solar flux\n"
@@ -26,15 +27,16 @@ int cmd_thermal(const Args& args) {
         "DIR/summary.json (outlet mixing-cup temperature, efficiency, powers,\n"
         "energy-balance residual, k_eff, solver statistics). Plot: apps/plot_thermal.py DIR.\n"
         "Examples: cases/thermal_*.yaml.\n");
-    return wants_help(args) ? 0 : 2;
+    return 0;
   }
+  if (args.empty()) throw UsageError("no case file given (centrec thermal --help)");
   std::string case_path, out_dir;
   CommandLine app("thermal");
   app.add_option("CASE", case_path)->required();
   app.add_option("--out", out_dir)->required();
   app.read(args);
   const config::ThermalCase c = config::read_thermal_case(case_path);
-  std::filesystem::create_directories(out_dir);
+  const io::OutputFolder out(out_dir);
   const auto t0 = std::chrono::steady_clock::now();
   const runs::ThermalRun r = runs::run_thermal_case(c);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

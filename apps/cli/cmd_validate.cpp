@@ -7,14 +7,17 @@
 namespace centrec::cli {
 
 int cmd_validate(const Args& args) {
-  if (wants_help(args) || args.empty()) {
+  if (wants_help(args)) {
     std::printf(
         "usage: centrec validate CASE.yaml\n\n"
         "Reads CASE.yaml with the same strict rules as every run (unknown keys, wrong\n"
-        "types and out-of-range values are errors naming the key path and line) and\n"
-        "prints the fully resolved configuration, defaults included.\n");
-    return wants_help(args) ? 0 : 2;
+        "types and out-of-range values are errors naming the key path and line), makes\n"
+        "every check `centrec dem` and `centrec run` make before they start (time step,\n"
+        "drum, feeder, step count, particles of a coupled case) and prints the fully\n"
+        "resolved configuration, defaults included.\n");
+    return 0;
   }
+  if (args.empty()) throw UsageError("no case file given (centrec validate --help)");
   std::string case_path;
   CommandLine app("validate");
   app.add_option("CASE", case_path)->required();

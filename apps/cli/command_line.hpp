@@ -3,11 +3,21 @@
 // each bound to one of its variables, on a CommandLine and reads its arguments with read(). Every command prints its own --help text, so the
 // parser has no help flag (wants_help in commands.hpp decides first).
 #include <CLI/CLI.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "cli/commands.hpp"
+#include "config/strict_yaml.hpp"
 
 namespace centrec::cli {
+
+// A command line that cannot run: a missing or unknown option, a value out of range (a
+// configuration error given on the command line). `main` prints it as
+// "centrec <command>: usage error: ..." and exits with 2.
+class UsageError : public config::ConfigError {
+ public:
+  using config::ConfigError::ConfigError;
+};
 
 // True if args contain -h or --help.
 bool wants_help(const Args& args);
@@ -16,12 +26,16 @@ bool wants_help(const Args& args);
 class CommandLine : public CLI::App {
  public:
   explicit CommandLine(const std::string& name);
-  // Reads args into the options declared on it; throws config::ConfigError naming the
-  // problem and `centrec <name> --help`.
+  // Reads args into the options declared on it; throws UsageError naming the problem in
+  // one line (an unknown option with the closest known one) and `centrec <name> --help`.
   void read(const Args& args);
 };
 
 // Accepts a finite number above zero, written without trailing characters.
 const CLI::Validator& positive_number();
+// Accepts a finite number inside `range` (unit for the message).
+CLI::Validator number_in(const config::Range& range, const std::string& unit = "");
+// Accepts a whole number in [lo, hi].
+CLI::Validator integer_in(long lo, long hi);
 
 }  // namespace centrec::cli

@@ -1,10 +1,14 @@
 // centrec: DEM of the CentRec particle film, coupling and thermal film model.
 #include <cstdio>
 #include <exception>
+#include <new>
+#include <stdexcept>
 #include <string>
 
+#include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "config/strict_yaml.hpp"
+#include "io/code_version.hpp"
 
 namespace centrec::cli {
 
@@ -24,16 +28,17 @@ const std::vector<Command>& commands() {
 }  // namespace centrec::cli
 
 namespace {
-void print_usage() {
-  std::printf("usage: centrec <command> [options]\n\ncommands:\n");
-  for (const auto& c : centrec::cli::commands()) std::printf("  %-10s %s\n", c.name, c.summary);
-  std::printf("\n'centrec <command> --help' describes each command.\n");
+void print_usage(std::FILE* to = stdout) {
+  std::fprintf(to, "usage: centrec <command> [options]    (centrec --version: the code version)\n\ncommands:\n");
+  for (const auto& c : centrec::cli::commands()) std::fprintf(to, "  %-10s %s\n", c.name, c.summary);
+  std::fprintf(to, "\n'centrec <command> --help' describes each command.\n");
 }
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    print_usage();
+    std::fprintf(stderr, "centrec: usage error: no command given\n");
+    print_usage(stderr);
     return 2;
   }
   const std::string name = argv[1];
@@ -41,21 +46,40 @@ int main(int argc, char** argv) {
     print_usage();
     return 0;
   }
+  if (name == "--version" || name == "-V" || name == "version") {
+    std::printf("centrec %s\n", centrec::io::code_version());
+    return 0;
+  }
   centrec::cli::Args args(argv + 2, argv + argc);
+  std::vector<std::string> names;
   for (const auto& c : centrec::cli::commands()) {
-    if (name == c.name) {
-      try {
-        return c.run(args);
-      } catch (const centrec::config::ConfigError& e) {
-        std::fprintf(stderr, "centrec %s: configuration error: %s\n", c.name, e.what());
-        return 2;
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "centrec %s: error: %s\n", c.name, e.what());
-        return 1;
-      }
+    names.push_back(c.name);
+    if (name != c.name) continue;
+    // Every failure is one line on stderr naming the command; the exit code says which kind.
+    try {
+      return c.run(args);
+    } catch (const centrec::cli::UsageError& e) {
+      std::fprintf(stderr, "centrec %s: usage error: %s\n", c.name, e.what());
+      return 2;
+    } catch (const centrec::config::ConfigError& e) {
+      std::fprintf(stderr, "centrec %s: configuration error: %s\n", c.name, e.what());
+      return 2;
+    } catch (const std::bad_alloc&) {
+      std::fprintf(stderr, "centrec %s: error: out of memory (the case asks for more particles, grid cells or "
+                           "samples than this machine holds)\n", c.name);
+      return 1;
+    } catch (const std::length_error& e) {
+      std::fprintf(stderr, "centrec %s: error: a size beyond what can be allocated (%s): the case asks for too "
+                           "many particles, grid cells or samples\n", c.name, e.what());
+      return 1;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "centrec %s: error: %s\n", c.name, e.what());
+      return 1;
     }
   }
-  std::fprintf(stderr, "centrec: unknown command '%s'\n\n", name.c_str());
-  print_usage();
+  const std::string near = centrec::config::closest_word(name, names);
+  std::fprintf(stderr, "centrec: usage error: unknown command '%s'%s\n\n", name.c_str(),
+               near.empty() ? "" : (" (did you mean '" + near + "'?)").c_str());
+  print_usage(stderr);
   return 2;
 }

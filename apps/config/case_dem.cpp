@@ -58,7 +58,7 @@ DemCase read_dem_case(MapReader root) {
   s.drum.diameter = drum.number("diameter", s.drum.diameter, Range::positive(), "m");
   s.drum.length = drum.number("length", s.drum.length, Range::positive(), "m");
   s.drum.tilt = drum.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg") * deg;
-  s.drum.omega = drum.number("speed_rpm", 160.08, Range::any(), "rpm") * 2.0 * M_PI / 60.0;
+  s.drum.omega = drum.number("speed_rpm", 160.08, Range::closed(-1e5, 1e5), "rpm") * 2.0 * M_PI / 60.0;
   s.drum.back_plate = drum.boolean("back_plate", true);
   s.drum.lip_height = drum.number("outlet_lip_height_d", 0.0, Range::closed(0.0, 0.25 * s.drum.diameter / d)) * d;
   drum.finish();
@@ -110,7 +110,7 @@ DemCase read_dem_case(MapReader root) {
   s.skin = run.number("skin_d", 0.2, Range::closed(0.01, 5.0), "d (Verlet skin)") * d;
   c.run.duration = run.number("duration", 1.0, Range::positive(), "s");
   c.run.max_extension =
-      run.number("max_extension", c.run.duration, Range::non_negative(), "s (spin-up extended until steady; default: duration)");
+      run.number("max_extension", -1.0, Range::closed(-1.0, 1e12), "s (spin-up extended until steady; -1 = run.duration)");
   c.run.progress_interval = run.number("progress_interval", 0.0, Range::non_negative(), "s");
   c.run.flow_window_turns = run.number("flow_window_turns", 5.0, Range::positive(), "turns");
   c.run.steady_tolerance = run.number("steady_tolerance", 0.05, Range::open_closed(0.0, 1.0));

@@ -10,7 +10,8 @@ namespace centrec::config {
 
 struct DemRunSpec {
   double duration = 1.0;          // s of simulated time before sampling starts
-  double max_extension = 1.0;     // s: spin-up extended past `duration` until steady, by at most this
+  double max_extension = -1.0;    // s: spin-up extended past `duration` until steady, by at most this (-1: duration)
+  double extension_cap() const { return max_extension < 0.0 ? duration : max_extension; }
   double progress_interval = 0.0; // s of wall time between progress lines (0 = auto)
   double flow_window_turns = 5.0; // turns over which inlet/outlet mass flows are averaged
   double steady_tolerance = 0.05; // steady flow (dem/scene/mass_flow_window.hpp) within this over the window

@@ -1,5 +1,10 @@
 #include "config/case_file.hpp"
 
+#include <sstream>
+#include <stdexcept>
+
+#include "config/case_checks.hpp"
+
 namespace centrec::config {
 
 namespace {
@@ -7,12 +12,25 @@ namespace {
 CaseFile read_case(MapReader root, const std::string& path) {
   CaseFile c;
   c.path = path;
+  // A misspelt section is reported as such before the sections are read.
+  root.known_keys({"title", "description", "dem", "receiver", "film", "thermal", "sweep"});
   c.title = root.string("title", "");
   root.string("description", "");
   if (root.has("dem")) c.dem = read_dem_case(root.child("dem"));
   if (root.has("receiver")) {
     if (!c.dem) root.fail("receiver", "a receiver is simulated through a scaled-down `dem:` section; add one");
     c.receiver = read_receiver(root.child("receiver"), root.child("dem"));
+  }
+  if (c.dem) {
+    // What the DEM commands check before they start, on the drum they would simulate.
+    DemCase run;
+    try {
+      run = effective_dem(*c.dem, c.receiver ? &*c.receiver : nullptr, {});
+    } catch (const std::invalid_argument& e) {
+      root.fail("receiver", e.what());
+    }
+    if (const auto p = dem_run_problem(run, c.receiver && c.receiver->dem_diameter_d > 0.0))
+      root.fail_path(p->key, p->message);
   }
   if (root.has("film") || root.has("thermal")) {
     ThermalCase t;
@@ -22,6 +40,8 @@ CaseFile read_case(MapReader root, const std::string& path) {
     read_thermal_sections(root, case_directory(path), t, c.dem.has_value());
     c.thermal = std::move(t);
   }
+  if (c.dem && c.thermal && c.thermal->film_source == "dem")
+    if (const auto p = coupled_run_problem(*c.dem, *c.thermal, c.receiver ? &*c.receiver : nullptr)) root.fail_path(p->key, p->message);
   if (root.has("sweep")) c.sweep = read_sweep(root.child("sweep"));
   root.finish();
   c.resolved_yaml = root.resolved_text();
@@ -33,7 +53,23 @@ CaseFile read_case(MapReader root, const std::string& path) {
 CaseFile read_case_file(const std::string& path) { return read_case(MapReader::from_file(path), path); }
 
 CaseFile read_case_text(const std::string& text, const std::string& path) {
-  return read_case(MapReader::from_string(text, path), path);
+  return read_case(MapReader::from_string(text, path + " (resolved configuration)"), path);
+}
+
+CaseFile with_overrides(const CaseFile& cf, const Overrides& o) {
+  if (!o.threads && !o.duration) return cf;
+  YAML::Node root = YAML::Load(cf.resolved_yaml);
+  YAML::Node run = root["dem"]["run"];
+  if (o.threads) run["threads"] = *o.threads;
+  if (o.duration) {
+    std::ostringstream v;
+    v.precision(10);
+    v << *o.duration;
+    run["duration"] = v.str();
+  }
+  YAML::Emitter e;
+  e << root;
+  return read_case_text(e.c_str(), cf.path);
 }
 
 }  // namespace centrec::config

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "config/case_checks.hpp"
 #include "config/case_dem.hpp"
 #include "config/case_receiver.hpp"
 #include "config/case_sweep.hpp"
@@ -28,5 +29,10 @@ CaseFile read_case_file(const std::string& path);
 // The same from YAML text (a checkpoint's resolved configuration); `path` names the case
 // in messages and anchors its relative paths.
 CaseFile read_case_text(const std::string& text, const std::string& path);
+
+// The case with the overrides' run.threads and run.duration written into its `dem:`
+// section, read again (and so checked again): the resolved configuration that outputs and
+// checkpoints record holds what the run actually does. Throws ConfigError.
+CaseFile with_overrides(const CaseFile& cf, const Overrides& o);
 
 }  // namespace centrec::config

@@ -1,11 +1,14 @@
 #include "config/case_thermal.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <stdexcept>
 
 #include "io/film_field_h5.hpp"
 #include "io/flux_table_csv.hpp"
 #include "thermal/analytic_film.hpp"
+#include "thermal/film_operator.hpp"
 
 namespace centrec::config {
 
@@ -151,6 +154,7 @@ void read_solver(MapReader r, ThermalCase& c) {
   c.steady.tolerance = r.number("steady_tolerance", 1e-10, Range::closed(1e-14, 1e-2));
   c.steady.newton_first = r.boolean("newton_first", true);
   c.steady.max_time_factor = r.number("max_time_scales", 1e4, Range::closed(1.0, 1e9));
+  c.steady.max_wall_seconds = r.number("max_wall_time", 600.0, Range::closed(1.0, 1e7), "s");
   c.transient_settings.integrator = in;
   c.transient_settings.integrator.rtol = r.number("transient_rtol", 1e-6, Range::closed(1e-12, 1e-2));
   r.finish();
@@ -171,6 +175,13 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   MapReader g = t.child("grid");
   c.grid.nz = static_cast<int>(g.integer("nz", 200, 2, 100000));
   if (!c.grid.lumped) c.grid.nxi = static_cast<int>(g.integer("nxi", 40, 2, 2000));
+  // The band Jacobian holds about 3 nxi + 1 entries per cell: refuse a grid it cannot hold.
+  const double cells = static_cast<double>(c.grid.nz) * (c.grid.lumped ? 1 : c.grid.nxi);
+  const double bytes = cells * (3.0 * (c.grid.lumped ? 1 : c.grid.nxi) + 1.0) * 8.0;
+  if (bytes > 4e9)
+    g.fail(c.grid.lumped ? "nz" : "nxi", "a grid of " + std::to_string(static_cast<long long>(cells)) +
+                                             " cells needs about " + std::to_string(static_cast<long long>(bytes / 1e9)) +
+                                             " GB for its band Jacobian (at most 4): use fewer cells");
   g.finish();
   c.grid.advection = t.choice("advection", "upwind", {"upwind", "van_leer"}) == "upwind" ? th::Advection::upwind
                                                                                          : th::Advection::van_leer;
@@ -192,6 +203,8 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
     cav.convection_correlation = rad.choice("convection", "correlation", {"correlation", "h_conv"}) == "correlation";
     cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg") * 3.14159265358979323846 / 180.0;
   }
+  if (cav.enabled && c.film_source != "dem" && cav.aperture_diameter > c.film.drum_diameter * (1 + 1e-9))
+    rad.fail("aperture_diameter", "exceeds the drum diameter " + std::to_string(c.film.drum_diameter) + " m of the film");
   rad.finish();
   MapReader s = t.child("surface");
   if (cav.enabled && s.has("loss_factor"))
@@ -221,6 +234,30 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
     t.fail("flux", "has a time history (flux.time) but the case has no thermal.transient section to run it");
   }
   t.finish();
+  // What the thermal run checks as it sets up (grid, film, cavity), before any work.
+  if (c.film_source != "dem") {
+    std::unique_ptr<thermal::FilmOperator> op;
+    try {
+      op = std::make_unique<thermal::FilmOperator>(c.film, m, c.grid);
+    } catch (const std::invalid_argument& e) {
+      root.fail("thermal", e.what());
+    }
+    // A film that, all at the top of the model's temperature range, would still absorb more
+    // than it carries away and loses has no steady state the model can reach: the march
+    // would only slow down toward it (docs/reliability.md).
+    op->freeze_inputs(true);
+    const double T_top = kTemperature.hi;
+    const thermal::FilmBalance hot = op->balance(0.0, op->uniform_state(T_top).data());
+    const double away = hot.carried + hot.emitted + hot.convected + hot.wall;
+    if (hot.absorbed > away) {
+      char why[320];
+      std::snprintf(why, sizeof why,
+                    "the film has no steady state below %.0f K: all at %.0f K it would absorb %.4g W but carry "
+                    "away and lose only %.4g W (a flux too high for its flow %.4g kg/s and its losses)",
+                    T_top, T_top, hot.absorbed, away, hot.mass_flow);
+      root.fail("thermal", why);
+    }
+  }
 }
 
 std::string case_directory(const std::string& case_path) {

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace centrec::config {
@@ -13,7 +17,134 @@ std::string fmt(double v) {
   s << v;
   return s.str();
 }
+
+std::string line_of(const std::string& source, const YAML::Mark& m) {
+  return m.line < 0 ? source : source + ":" + std::to_string(m.line + 1);
+}
+
+// The first byte of `text` that is not part of valid UTF-8, or npos.
+std::size_t invalid_utf8_at(const std::string& text) {
+  const auto* b = reinterpret_cast<const unsigned char*>(text.data());
+  const std::size_t n = text.size();
+  for (std::size_t i = 0; i < n;) {
+    const unsigned c = b[i];
+    std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    if (len == 0 || (len == 2 && c < 0xC2) || i + len > n) return i;
+    for (std::size_t k = 1; k < len; ++k)
+      if ((b[i + k] & 0xC0) != 0x80) return i;
+    if (len == 3 && ((c == 0xE0 && b[i + 1] < 0xA0) || (c == 0xED && b[i + 1] >= 0xA0))) return i;  // overlong, surrogate
+    if (len == 4 && ((c == 0xF0 && b[i + 1] < 0x90) || c > 0xF4 || (c == 0xF4 && b[i + 1] >= 0x90))) return i;
+    i += len;
+  }
+  return std::string::npos;
+}
+
+// Checks what yaml-cpp accepts but a case file must not hold: a key given twice, a key
+// without a value, a quoted value whose closing quote is not on its own line (an
+// unterminated quote swallows the rest of the file), a key that is not a plain word.
+void check_tree(const YAML::Node& n, const std::string& text, const std::string& source, const std::string& path) {
+  if (n.IsMap()) {
+    std::vector<std::string> seen;
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      if (!it->first.IsScalar())
+        throw ConfigError(line_of(source, it->first.Mark()) + ": " + (path.empty() ? "" : path + ": ") +
+                          "a key must be a plain word");
+      const std::string key = it->first.Scalar();
+      const std::string kp = path.empty() ? key : path + "." + key;
+      if (std::find(seen.begin(), seen.end(), key) != seen.end())
+        throw ConfigError(line_of(source, it->first.Mark()) + ": " + kp +
+                          " is given twice in one mapping (remove one of them)");
+      seen.push_back(key);
+      if (it->second.IsNull())
+        throw ConfigError(line_of(source, it->first.Mark()) + ": " + kp +
+                          " has no value (give one, or remove the key for its default)");
+      check_tree(it->second, text, source, kp);
+    }
+  } else if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      const std::string kp = path + "[" + std::to_string(i) + "]";
+      if (n[i].IsNull()) throw ConfigError(line_of(source, n[i].Mark()) + ": " + kp + " has no value");
+      check_tree(n[i], text, source, kp);
+    }
+  } else if (n.IsScalar()) {
+    const YAML::Mark m = n.Mark();
+    if (m.pos < 0 || static_cast<std::size_t>(m.pos) >= text.size()) return;
+    const char q = text[static_cast<std::size_t>(m.pos)];
+    if (q != '"' && q != '\'') return;
+    for (std::size_t i = static_cast<std::size_t>(m.pos) + 1; i < text.size(); ++i) {
+      if (text[i] == '\n')
+        throw ConfigError(line_of(source, m) + ": " + path + ": the quoted value has no closing " +
+                          std::string(1, q) + " on its line (a quoted value must end on the line it starts)");
+      if (q == '"' && text[i] == '\\') {
+        ++i;
+      } else if (text[i] == q) {
+        if (q == '\'' && i + 1 < text.size() && text[i + 1] == '\'') {
+          ++i;  // '' is an escaped quote
+          continue;
+        }
+        return;
+      }
+    }
+  }
+}
+
+// Parses a whole case text strictly (see check_tree) into a mapping.
+YAML::Node parse_case(const std::string& text, const std::string& source) {
+  const std::size_t bad = invalid_utf8_at(text);
+  if (bad != std::string::npos)
+    throw ConfigError(source + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(bad), '\n')) +
+                      ": the file is not valid UTF-8 text (byte " + std::to_string(bad) + ")");
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02x", c);
+      throw ConfigError(source + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(i), '\n')) +
+                        ": a control character (byte " + hex + ") in the text");
+    }
+  }
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw ConfigError(source + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  if (!root.IsMap()) throw ConfigError(source + ": the case must be a YAML mapping (key: value)");
+  check_tree(root, text, source, "");
+  return root;
+}
+
+// Edit distance, for "did you mean" suggestions.
+std::size_t distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1,
+                         prev[j - 1] + (std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                                                std::tolower(static_cast<unsigned char>(b[j - 1]))
+                                            ? 0
+                                            : 1)});
+    prev.swap(cur);
+  }
+  return prev[b.size()];
+}
 }  // namespace
+
+std::string closest_word(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const auto& c : candidates) {
+    const std::size_t d = distance(word, c);
+    if (d < best_d) best_d = d, best = c;
+  }
+  if (best.empty() && word.size() >= 3)  // a shortened key: tilt for tilt_deg
+    for (const auto& c : candidates)
+      if (c.size() > word.size() && distance(word, c.substr(0, word.size())) == 0) return c;
+  return best;
+}
 
 bool Range::contains(double v) const {
   if (!std::isfinite(v)) return false;
@@ -35,30 +166,22 @@ MapReader::MapReader(YAML::Node node, std::string path, std::shared_ptr<Shared> 
       resolved_here_(std::move(resolved_here)) {}
 
 MapReader MapReader::from_file(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw ConfigError(path + ": cannot open the case file");
-  } catch (const YAML::ParserException& e) {
-    throw ConfigError(path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
-  }
-  if (!root.IsMap()) throw ConfigError(path + ": the case file must be a YAML mapping (key: value)");
-  auto shared = std::make_shared<Shared>();
-  shared->source = path;
-  shared->resolved = YAML::Node(YAML::NodeType::Map);
-  return MapReader(root, "", shared, shared->resolved);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw ConfigError(path + ": no such case file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw ConfigError(path + ": not a case file (a directory?)");
+  // A case file is a few kB; a huge one is a mistake (a data file given as the case).
+  constexpr std::uintmax_t kMaxBytes = 16u << 20;
+  if (std::filesystem::file_size(path, ec) > kMaxBytes)
+    throw ConfigError(path + ": larger than 16 MB, not a case file");
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw ConfigError(path + ": cannot open the case file (permissions?)");
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  if (f.bad()) throw ConfigError(path + ": cannot read the case file");
+  return from_string(text, path);
 }
 
 MapReader MapReader::from_string(const std::string& text, const std::string& source_name) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw ConfigError(source_name + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
-  }
-  if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
-  if (!root.IsMap()) throw ConfigError(source_name + ": the case must be a YAML mapping (key: value)");
+  YAML::Node root = parse_case(text, source_name);
   auto shared = std::make_shared<Shared>();
   shared->source = source_name;
   shared->resolved = YAML::Node(YAML::NodeType::Map);
@@ -81,6 +204,24 @@ void MapReader::fail(const std::string& key, const std::string& message) const {
   throw ConfigError(loc + ": " + key_path(key) + ": " + message);
 }
 
+void MapReader::fail_path(const std::string& dotted, const std::string& message) const {
+  YAML::Node n = node_;
+  std::string loc = where(node_);
+  for (std::size_t a = 0; a <= dotted.size();) {
+    std::size_t b = dotted.find('.', a);
+    if (b == std::string::npos) b = dotted.size();
+    const std::string part = dotted.substr(a, b - a);
+    if (!n.IsMap()) break;
+    const YAML::Node& parent = n;  // const lookup: never inserts the key
+    YAML::Node next = parent[part];
+    if (!next.IsDefined()) break;
+    loc = where(next);
+    n.reset(next);
+    a = b + 1;
+  }
+  throw ConfigError(loc + ": " + key_path(dotted) + ": " + message);
+}
+
 bool MapReader::has(const std::string& key) const {
   return node_.IsMap() && node_[key].IsDefined() && !node_[key].IsNull();
 }
@@ -101,6 +242,8 @@ double MapReader::to_number(const std::string& key, const YAML::Node& n) const {
   double v = std::strtod(s.c_str(), &end);
   if (s.empty() || end == s.c_str() || *end != '\0')
     throw ConfigError(where(n) + ": " + key_path(key) + " = '" + s + "' is not a number");
+  if (!std::isfinite(v))
+    throw ConfigError(where(n) + ": " + key_path(key) + " = '" + s + "' is not a finite number");
   return v;
 }
 
@@ -127,8 +270,12 @@ long MapReader::integer(const std::string& key, long default_value, long lo, lon
   long v = default_value;
   if (on) {
     double d = to_number(key, n);
-    if (d != std::floor(d))
+    if (!std::isfinite(d) || d != std::floor(d))
       throw ConfigError(where(n) + ": " + key_path(key) + " = " + n.Scalar() + " must be an integer");
+    // Range-checked as a double: a value beyond long's range cannot be converted.
+    if (d < static_cast<double>(lo) || d > static_cast<double>(hi))
+      throw ConfigError(where(n) + ": " + key_path(key) + " = " + n.Scalar() + " is out of the allowed range [" +
+                        std::to_string(lo) + ", " + std::to_string(hi) + "]");
     v = static_cast<long>(d);
   }
   if (v < lo || v > hi)
@@ -242,16 +389,31 @@ std::vector<MapReader> MapReader::children(const std::string& key) {
   return out;
 }
 
-void MapReader::finish() const {
+void MapReader::known_keys(const std::vector<std::string>& keys) {
+  known_.insert(known_.end(), keys.begin(), keys.end());
+  check_keys(known_);
+}
+
+void MapReader::check_keys(const std::vector<std::string>& allowed) const {
   if (!node_.IsMap()) return;
+  std::vector<std::string> known;
+  for (const auto& u : allowed)
+    if (std::find(known.begin(), known.end(), u) == known.end()) known.push_back(u);
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     const std::string k = it->first.Scalar();
-    if (std::find(used_.begin(), used_.end(), k) == used_.end()) {
-      std::string known;
-      for (const auto& u : used_) known += (known.empty() ? "" : ", ") + u;
-      throw ConfigError(where(it->first) + ": unknown key '" + key_path(k) + "' (known keys here: " + known + ")");
-    }
+    if (std::find(known.begin(), known.end(), k) != known.end()) continue;
+    std::string list;
+    for (const auto& u : known) list += (list.empty() ? "" : ", ") + u;
+    const std::string near = closest_word(k, known);
+    throw ConfigError(where(it->first) + ": unknown key '" + key_path(k) + "'" +
+                      (near.empty() ? "" : " (did you mean '" + near + "'?)") + "; known keys here: " + list);
   }
+}
+
+void MapReader::finish() const {
+  std::vector<std::string> allowed = used_;
+  allowed.insert(allowed.end(), known_.begin(), known_.end());
+  check_keys(allowed);
 }
 
 std::string MapReader::resolved_text() const {

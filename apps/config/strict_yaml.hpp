@@ -64,8 +64,14 @@ class MapReader {
   // A sequence of mappings under key (empty if absent).
   std::vector<MapReader> children(const std::string& key);
 
-  // Throws ConfigError naming the first key in this mapping that was never read.
-  // Call once all keys of this mapping are read; child readers check their own.
+  // Declares every key this mapping may hold (read or not, e.g. optional sections) and
+  // refuses at once any other key, with the closest known key as a suggestion. finish()
+  // then also accepts these.
+  void known_keys(const std::vector<std::string>& keys);
+
+  // Throws ConfigError naming the first key in this mapping that was never read (nor
+  // declared by known_keys). Call once all keys of this mapping are read; child readers
+  // check their own.
   void finish() const;
 
   // The full resolved configuration (all readers of this file share it).
@@ -76,6 +82,9 @@ class MapReader {
 
   // Error with location for a value that passed type checks but violates a relation.
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  // The same for a dotted key path below this mapping ("dem.run.dt"): the line is the
+  // deepest part of the path the file gives.
+  [[noreturn]] void fail_path(const std::string& dotted, const std::string& message) const;
 
  private:
   struct Shared {
@@ -87,12 +96,18 @@ class MapReader {
   std::string where(const YAML::Node& n) const;
   std::optional<YAML::Node> get(const std::string& key);
   double to_number(const std::string& key, const YAML::Node& n) const;
+  void check_keys(const std::vector<std::string>& allowed) const;
 
   YAML::Node node_;
   std::string path_;
   std::shared_ptr<Shared> shared_;
   YAML::Node resolved_here_;
   std::vector<std::string> used_;
+  std::vector<std::string> known_;
 };
+
+// The candidate closest to `word` (case-insensitive edit distance, at most about a third
+// of its letters), or "" if none is close: the "did you mean" of unknown keys and flags.
+std::string closest_word(const std::string& word, const std::vector<std::string>& candidates);
 
 }  // namespace centrec::config

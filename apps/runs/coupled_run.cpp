@@ -23,21 +23,13 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// The DEM inputs as they will run: receiver derivation, then the command-line overrides.
+// The DEM inputs as they will run: receiver derivation, then the command-line overrides
+// (config::effective_dem, the same as `centrec dem` and the case checks).
 void effective_dem(const config::CaseFile& cf, const RunOptions& o, CoupledRun& r) {
-  r.dem = *cf.dem;
-  if (o.threads >= 0) r.dem.scene.threads = o.threads;
-  const bool overridden = o.speed_rpm > 0.0 || o.mass_flow > 0.0;
-  if (cf.receiver) {
-    r.has_receiver = true;
-    r.receiver = *cf.receiver;
-    if (o.speed_rpm > 0.0) r.receiver.op.omega = coupling::rpm_to_rad_per_s(o.speed_rpm);
-    if (o.mass_flow > 0.0) r.receiver.op.mass_flow = o.mass_flow;
-    config::apply_receiver(r.receiver, r.dem, overridden);
-  } else {
-    if (o.speed_rpm > 0.0) r.dem.scene.drum.omega = coupling::rpm_to_rad_per_s(o.speed_rpm);
-    if (o.mass_flow > 0.0) dem::scene::set_target_mass_flow(r.dem.scene, o.mass_flow);
-  }
+  const config::Overrides ov = run_overrides(o);
+  r.has_receiver = cf.receiver.has_value();
+  if (cf.receiver) r.receiver = config::effective_receiver(*cf.receiver, ov);
+  r.dem = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, ov);
 }
 
 std::string resolved_dem_section(const config::CaseFile& cf) {
@@ -66,6 +58,14 @@ void check_same_particles(const CoupledRun& r) {
                                 " m, density = " + std::to_string(rho) + " kg/m3; make them equal");
 }
 }  // namespace
+
+config::Overrides run_overrides(const RunOptions& o) {
+  config::Overrides ov;
+  if (o.threads >= 0) ov.threads = o.threads;
+  if (o.speed_rpm > 0.0) ov.speed_rpm = o.speed_rpm;
+  if (o.mass_flow > 0.0) ov.mass_flow = o.mass_flow;
+  return ov;
+}
 
 CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
   if (!cf.thermal) throw std::invalid_argument(cf.path + ": a coupled run needs a `thermal:` section");

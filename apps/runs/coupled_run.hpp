@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "config/case_checks.hpp"
 #include "config/case_file.hpp"
 #include "coupling/dem_film_averages.hpp"
 #include "coupling/film_mapping.hpp"
@@ -49,6 +50,9 @@ struct CoupledRun {
   ThermalRun result;
   double dem_seconds = 0.0, mapping_seconds = 0.0, thermal_seconds = 0.0;
 };
+
+// The options as config::Overrides (unset where they take the case's value).
+config::Overrides run_overrides(const RunOptions& o);
 
 // Throws std::invalid_argument / std::runtime_error with a clear message on failure.
 CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o);

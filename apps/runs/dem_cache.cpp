@@ -7,6 +7,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
 
 #include "io/atomic_write.hpp"
 #include "io/provenance.hpp"
@@ -44,20 +47,59 @@ std::string interrupted_dem_run(const std::string& cache_dir, const std::string&
   return {};
 }
 
+namespace {
+constexpr const char* kChecksums = "checksums.txt";
+const char* const kCheckedFiles[] = {"dem.h5", "summary.json"};
+
+// Writes dir/checksums.txt: one "<file> <checksum>" line per file the coupled run reads back.
+void write_checksums(const std::string& dir) {
+  std::string text;
+  for (const char* f : kCheckedFiles) text += std::string(f) + " " + io::file_checksum(dir + "/" + f) + "\n";
+  io::write_text_atomically(dir + "/" + kChecksums, text);
+}
+
+// Throws naming the damaged file when a cached file differs from its recorded checksum.
+void verify_checksums(const std::string& dir) {
+  std::ifstream in(dir + "/" + kChecksums);
+  std::string name, sum;
+  int checked = 0;
+  while (in >> name >> sum) {
+    const std::string path = dir + "/" + name;
+    const std::string now = io::file_checksum(path);
+    if (now != sum)
+      throw std::runtime_error(path + ": checksum mismatch (recorded " + sum + ", now " + now +
+                               "): the cached DEM output is damaged; remove " + dir + " to run the DEM again");
+    ++checked;
+  }
+  if (checked != static_cast<int>(std::size(kCheckedFiles)))
+    throw std::runtime_error(dir + "/" + kChecksums + " is damaged; remove " + dir + " to run the DEM again");
+}
+}  // namespace
+
 CachedDem cached_dem_run(const std::string& cache_dir, const std::string& key,
                          const std::function<void(const std::string& dir, bool resume)>& run) {
   CachedDem c;
   c.dir = cache_dir + "/" + key;
-  if (fs::exists(c.dir + "/dem.h5") && fs::exists(c.dir + "/summary.json")) {
+  // A complete entry has its checksums (written last); one without is rerun.
+  if (fs::exists(c.dir + "/" + kChecksums)) {
+    verify_checksums(c.dir);
     c.hit = true;
     return c;
   }
-  io::ensure_directory(cache_dir);
+  const io::OutputFolder cache(cache_dir);  // removed again if this run leaves it empty
   const std::string tmp = c.dir + ".tmp" + std::to_string(::getpid());
   fs::remove_all(tmp);
   c.resumed_from = interrupted_dem_run(cache_dir, key);
   if (!c.resumed_from.empty()) fs::rename(c.resumed_from, tmp);
-  run(tmp, !c.resumed_from.empty());
+  try {
+    run(tmp, !c.resumed_from.empty());
+    write_checksums(tmp);
+  } catch (...) {
+    // Keep a folder with a checkpoint to continue from; remove one without.
+    std::error_code ec;
+    if (!fs::exists(tmp + "/checkpoint.h5", ec)) fs::remove_all(tmp, ec);
+    throw;
+  }
   fs::remove_all(c.dir);  // an incomplete entry
   fs::rename(tmp, c.dir);
   return c;

@@ -19,11 +19,15 @@ struct CachedDem {
   std::string resumed_from;  // the interrupted run's folder this one continued, if any
 };
 
-// Returns CACHE/<key> if it holds a complete run; otherwise calls run(tmp_dir, resume) to
+// Returns CACHE/<key> if it holds a complete run (its dem.h5 and summary.json checked
+// against the checksums recorded when the entry was made: a damaged entry is refused,
+// naming the file); otherwise calls run(tmp_dir, resume) to
 // produce one in a temporary folder CACHE/<key>.tmp<pid> and renames it into place (a
 // killed run leaves no entry). A killed run leaves its temporary folder with its last
 // checkpoint: the next run of the same inputs takes that folder over and calls run with
-// resume = true (continue from tmp_dir/checkpoint.h5) instead of starting again.
+// resume = true (continue from tmp_dir/checkpoint.h5) instead of starting again. A run
+// that fails before its first checkpoint removes its temporary folder (and CACHE, if it
+// created it and left it empty).
 CachedDem cached_dem_run(const std::string& cache_dir, const std::string& key,
                          const std::function<void(const std::string& dir, bool resume)>& run);
 

@@ -13,7 +13,9 @@
 #include "dem/scene/scene_sampler.hpp"
 #include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
+#include "config/case_checks.hpp"
 #include "runs/dem_run_report.hpp"
+#include "runs/interrupt.hpp"
 #include "runs/progress_meter.hpp"
 
 namespace centrec::runs {
@@ -44,10 +46,12 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
                   : "building the drum, its rough wall and the initial film");
   dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(dc.scene);
   auto& sim = scene.simulation();
-  std::fprintf(stderr, "%s  %s\n  dt = %.3g s, %lld glued + %lld free particles, %d thread(s)\n",
+  std::fprintf(stderr, "%s  %s\n  %s\n  %lld glued + %lld free particles, %d thread(s)\n",
                ck ? ("  resumed at t = " + std::to_string(sim.time()) + " s (" + ck->phase + ")\n").c_str() : "",
-               sim.time_step_advice().report().c_str(), sim.dt(), static_cast<long long>(scene.glued_particles()),
-               static_cast<long long>(scene.free_particles()), sim.threads());
+               sim.time_step_advice().report().c_str(),
+               config::time_step_statement(sim.time_step_advice(), dc.scene.dt).c_str(),
+               static_cast<long long>(scene.glued_particles()), static_cast<long long>(scene.free_particles()),
+               sim.threads());
 
   const double period = scene.turn_period();
   const double total = dc.run.duration + dc.sampling.turns * period;
@@ -98,12 +102,20 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     io::write_checkpoint(out_dir, c);
     checkpoint_at = std::chrono::steady_clock::now();
   };
+  // Ctrl-C / SIGTERM: checkpoint at the next safe point (where the periodic ones are written) and stop.
+  const InterruptGuard interrupt;
+  auto stop_if_interrupted = [&](const std::string& phase) {
+    if (const int signal = InterruptGuard::received()) {
+      checkpoint(phase, true);
+      throw RunInterrupted(signal, sim.time(), out_dir);
+    }
+  };
 
   // Spin-up (filling, reaching steady state), then sampling turn by turn.
   // Past run.duration the spin-up goes on, chunk by chunk, until the flow is steady over the
-  // flow window (dem/scene/mass_flow_window.hpp) or run.max_extension more has passed; the
-  // run report then says whether it was steady.
-  const double window = dc.run.flow_window_turns * period, cap = dc.run.duration + dc.run.max_extension;
+  // flow window (dem/scene/mass_flow_window.hpp) or run.max_extension (default: run.duration)
+  // more has passed; the run report then says whether it was steady.
+  const double window = dc.run.flow_window_turns * period, cap = dc.run.duration + dc.run.extension_cap();
   auto steadiness = [&] {
     return dem::scene::flow_steadiness(scene.mass_flow_log(), dc.scene, window, dc.run.steady_tolerance);
   };
@@ -116,6 +128,7 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
       advance([&] { scene.advance(std::min(chunk, dc.run.duration - sim.time())); });
       sim.rebuild_lists();
       checkpoint("spin-up", false);
+      stop_if_interrupted("spin-up");
     }
     bool told = false;
     while (sim.time() < cap - 0.5 * sim.dt() && !steadiness().steady) {
@@ -163,6 +176,7 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     ++sampled;
     sim.rebuild_lists();
     checkpoint("sampling", false);
+    stop_if_interrupted("sampling");
   }
   if (sim.time() > snapshots.back().data.time) keep(dem::scene::take_snapshot(sim), true);
   progress.update(sim.time(), sim.time() / period, particle_steps, true, flows);

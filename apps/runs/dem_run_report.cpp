@@ -130,6 +130,12 @@ void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf
     std::printf("holdup %.4f kg (%lld free particles), inlet %.3f g/s, outlet %.3f g/s over the last %.2f s\n",
                 r.holdup_kg, static_cast<long long>(r.free_particles), flows.fed * 1e3, flows.out * 1e3, window);
   std::printf("%.3g particle-steps/s, wall time %.1f s\n", rate, r.wall_time);
+  const double asked = dc.scene.feeder.mass_flow;
+  if (dc.scene.feeder.enabled && !dc.scene.slice.enabled && r.feeder_deferred > 0 && flows.fed < 0.9 * asked)
+    std::fprintf(stderr,
+                 "centrec dem: warning: the feeder delivered %.4g g/s of the %.4g g/s asked (%lld insertions "
+                 "deferred: its region was full); enlarge dem.feeder's region or lower the mass flow\n",
+                 flows.fed * 1e3, asked * 1e3, static_cast<long long>(r.feeder_deferred));
   if (r.fields.snapshots > 0)
     std::printf("film thickness %.2f +- %.2f d over %zu turns\n", r.fields.mean_thickness.mean_d,
                 r.fields.mean_thickness.std_d, r.fields.turns);

@@ -18,6 +18,7 @@
 #include "dem/scene/centrec_scene.hpp"
 #include "io/checkpoint_h5.hpp"
 #include "io/h5_file.hpp"
+#include "tests/scene/resume_case.hpp"
 #include "tests/scene/slice_case.hpp"
 #include "tests/test_case_dir.hpp"
 
@@ -29,17 +30,7 @@ using centrec::testing::write_case;
 
 namespace {
 
-// A small fed drum (feeder RNG, outlet, rough wall, sampler all in the state): D/d = 25,
-// 12.5 d long, 0.04 s of spin-up and 2 sampled turns of 4 snapshots.
-const char* kCase = R"(title: resume
-dem:
-  drum: {diameter: 0.03, length: 0.015, tilt_deg: 45, speed_rpm: 320.16}
-  rough_wall: {enabled: true}
-  feeder: {mass_flow: 4.0e-3, axial_length_d: 3}
-  initial_film: {particles: 500}
-  run: {duration: 0.04, dt: 2.0e-5, skin_d: 0.4, threads: 1, checkpoint_interval: 1.0e-9, progress_interval: 1000}
-  sampling: {turns: 2, snapshots_per_turn: 4, axial_sections: 4, tangential_bins: 12, bins: 6}
-)";
+const char* const kCase = centrec::testing::kResumeCase;
 
 // Runs `centrec dem` in a child process and SIGKILLs it once its checkpoint says it has
 // sampled at least one turn. Returns the sampled turns of the checkpoint left behind.

@@ -1,0 +1,18 @@
+#pragma once
+// Command-line values that replace a case's (--threads, --duration, --speed-rpm,
+// --mass-flow) pass the same checks as the case file's values (config/case_checks), before
+// any work; a refusal names the flags.
+#include "config/case_file.hpp"
+
+namespace centrec::cli {
+
+// "--threads 2 --duration 0.1": the overrides as they were given.
+std::string flags_text(const config::Overrides& o);
+
+// config::with_overrides, its ConfigError turned into a UsageError naming the flags.
+config::CaseFile checked_overrides(const config::CaseFile& cf, const config::Overrides& o);
+
+// The DEM a coupled run simulates with the overrides, checked (config::dem_run_problem).
+config::DemCase checked_dem(const config::CaseFile& cf, const config::Overrides& o);
+
+}  // namespace centrec::cli

@@ -1,0 +1,175 @@
+#include "config/case_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "dem/material.hpp"
+#include "dem/scene/centrec_scene.hpp"
+#include "dem/sphere_mass.hpp"
+
+namespace centrec::config {
+
+namespace {
+std::string g(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+
+// The smallest particle radius of the size distribution (normal: cut at 3 sigma).
+double smallest_radius(const dem::scene::ParticleSpec& p) {
+  const double s = p.distribution == dem::scene::SizeDistribution::mono      ? 0.0
+                   : p.distribution == dem::scene::SizeDistribution::uniform ? p.relative_spread
+                                                                             : 3.0 * p.relative_spread;
+  return 0.5 * p.diameter * (1.0 - s);
+}
+}  // namespace
+
+ReceiverCase effective_receiver(const ReceiverCase& r, const Overrides& o) {
+  ReceiverCase e = r;
+  if (o.speed_rpm) e.op.omega = coupling::rpm_to_rad_per_s(*o.speed_rpm);
+  if (o.mass_flow) e.op.mass_flow = *o.mass_flow;
+  return e;
+}
+
+DemCase effective_dem(const DemCase& dem, const ReceiverCase* receiver, const Overrides& o) {
+  DemCase d = dem;
+  if (o.threads) d.scene.threads = *o.threads;
+  if (o.duration) d.run.duration = *o.duration;
+  if (receiver) {
+    apply_receiver(effective_receiver(*receiver, o), d, o.any_operating_point());
+  } else {
+    if (o.speed_rpm) d.scene.drum.omega = coupling::rpm_to_rad_per_s(*o.speed_rpm);
+    if (o.mass_flow) dem::scene::set_target_mass_flow(d.scene, *o.mass_flow);
+  }
+  return d;
+}
+
+dem::TimeStepAdvice dem_time_step_advice(const DemCase& dc) {
+  // As dem::Simulation::time_step_advice, over every particle the run can hold.
+  const auto& s = dc.scene;
+  double r = smallest_radius(s.particle);
+  if (s.rough_wall.enabled) r = std::min(r, 0.5 * s.rough_wall.sphere_diameter);
+  const dem::Material& pm = s.particle.material;
+  const double m = dem::sphere_mass(pm.density, r);
+  const double e_pp = dem::make_pair_constants(pm, pm, s.particle_particle).E_eff;
+  const double e_pw = dem::make_pair_constants(pm, s.wall_material, s.particle_wall).E_eff;
+  dem::TimeStepAdvice a;
+  a.max_impact_speed = s.max_impact_speed;
+  a.rayleigh_time = dem::rayleigh_time(pm, r);
+  a.hertz_time = std::min(dem::hertz_contact_time(0.5 * m, 0.5 * r, e_pp, s.max_impact_speed),
+                          dem::hertz_contact_time(m, r, e_pw, s.max_impact_speed));
+  a.stable_bound = std::min(dem::TimeStepAdvice::kRayleighBound * a.rayleigh_time,
+                            dem::TimeStepAdvice::kHertzBound * a.hertz_time);
+  constexpr double kDtFraction = 0.1;  // dem::SimulationConfig::dt_fraction
+  a.recommended = std::min(kDtFraction * std::min(a.rayleigh_time, a.hertz_time), a.stable_bound);
+  return a;
+}
+
+double dem_time_step(const DemCase& dc) {
+  return dc.scene.dt > 0.0 ? dc.scene.dt : dem_time_step_advice(dc).recommended;
+}
+
+std::string time_step_statement(const dem::TimeStepAdvice& a, double dt_given) {
+  if (!(dt_given > 0.0))
+    return "dt = " + g(a.recommended) + " s: the recommended step (0.1 x the shorter of the Rayleigh and Hertz times)";
+  return "dt = " + g(dt_given) + " s from run.dt: within the stability bound " + g(a.stable_bound) +
+         " s (the smaller of 0.5 x Rayleigh time and 0.2 x Hertz time; " + g(a.hertz_time / dt_given) +
+         " steps per fastest collision); the recommended " + g(a.recommended) +
+         " s (0.1 x the shorter time) is the default without run.dt";
+}
+
+std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived) {
+  const auto& s = dc.scene;
+  const double d = s.particle.diameter, R = 0.5 * s.drum.diameter, L = s.drum.length;
+  const std::string drum_key = derived ? "receiver.dem_diameter_d" : "dem.drum.diameter";
+  const std::string drum_is = derived ? "the DEM drum derived from receiver.dem_diameter_d" : "the drum diameter";
+  if (!(R > 10.0 * d))
+    return CaseProblem{drum_key, drum_is + " = " + g(s.drum.diameter) + " m must exceed 20 particle diameters (" +
+                                     g(20.0 * d) + " m)"};
+  if (!(L > d))
+    return CaseProblem{derived ? drum_key : "dem.drum.length",
+                       "the drum length " + g(L) + " m must exceed one particle diameter (" + g(d) + " m)"};
+  if (!std::isfinite(s.drum.omega) || s.drum.omega == 0.0 || std::fabs(coupling::rad_per_s_to_rpm(s.drum.omega)) > 1e5)
+    return CaseProblem{derived ? "receiver.speed_rpm" : "dem.drum.speed_rpm",
+                       "the drum speed " + g(coupling::rad_per_s_to_rpm(s.drum.omega)) +
+                           " rpm must be non-zero and at most 1e5 rpm (turns count the run's sampling and flow windows)"};
+  if (s.slice.enabled && s.drum.lip_height > 0.0)
+    return CaseProblem{"dem.drum.outlet_lip_height_d", "a periodic slice has no outlet, so no lip (set it to 0)"};
+  const bool fed = s.feeder.enabled && !s.slice.enabled;
+  if (fed) {
+    const auto& f = s.feeder;
+    if (!(f.radial_offset > 0.0 && f.radial_offset < R))
+      return CaseProblem{"dem.feeder.radial_offset_d", "the feeder centre " + g(f.radial_offset) +
+                                                           " m inside the wall lies outside the drum radius " + g(R) + " m"};
+    if (f.axial_start + f.axial_length > L)
+      return CaseProblem{"dem.feeder.axial_length_d", "the feeder region (axial_start + axial_length = " +
+                                                          g(f.axial_start + f.axial_length) +
+                                                          " m) extends past the drum length " + g(L) + " m"};
+    // The most the region can take per batch: filled at the densest packing of spheres.
+    const double region = f.axial_length * f.radial_height * f.arc_width;
+    const double capacity = 0.74 * region * s.particle.material.density / f.interval;
+    if (f.mass_flow > capacity)
+      return CaseProblem{derived ? "receiver.mass_flow" : "dem.feeder.mass_flow",
+                         "the feed " + g(f.mass_flow) + " kg/s exceeds what the feeder region can insert (" +
+                             g(capacity) + " kg/s: its volume " + g(region) + " m^3 filled densely every " +
+                             g(f.interval) + " s); enlarge the region or lower the flow"};
+  }
+  if (s.initial_film.particles > 0) {
+    const double rmax = 0.5 * d * (1.0 + 3.0 * s.particle.relative_spread);
+    const double span = s.slice.enabled ? s.slice.length : L;
+    const double fits = 0.74 * M_PI * R * R * span / ((4.0 / 3.0) * M_PI * rmax * rmax * rmax);
+    if (static_cast<double>(s.initial_film.particles) > fits)
+      return CaseProblem{"dem.initial_film.particles",
+                         std::to_string(s.initial_film.particles) + " particles do not fit in the drum (at most " +
+                             g(fits) + " at the densest packing)"};
+  }
+  const auto& sp = dc.sampling.sampler;
+  const double bins = static_cast<double>(sp.axial_sections) * sp.tangential_bins * sp.bins;
+  if (dc.sampling.turns > 0.0 && bins > 1e7)
+    return CaseProblem{"dem.sampling.bins", "axial_sections x tangential_bins x bins = " + g(bins) +
+                                                " sampling bins per field, more than 1e7 (" + g(bins * 8e-9) +
+                                                " GB each): fewer sections, bins or tangential bins"};
+  const dem::TimeStepAdvice a = dem_time_step_advice(dc);
+  if (s.dt > a.stable_bound)
+    return CaseProblem{"dem.run.dt", "dt = " + g(s.dt) + " s exceeds the stability bound " + g(a.stable_bound) +
+                                         " s (" + g(dem::TimeStepAdvice::kRayleighBound) + " x Rayleigh time " +
+                                         g(a.rayleigh_time) + " s, " + g(dem::TimeStepAdvice::kHertzBound) +
+                                         " x Hertz contact time " + g(a.hertz_time) + " s at " +
+                                         g(a.max_impact_speed) + " m/s); use dt <= " + g(a.stable_bound) +
+                                         " s (recommended " + g(a.recommended) + " s)"};
+  const double dt = s.dt > 0.0 ? s.dt : a.recommended;
+  const double simulated = dc.run.duration + dc.sampling.turns * dem::scene::turn_period(s);
+  const double steps = simulated / dt;
+  if (!(steps <= kMaxSteps))
+    return CaseProblem{s.dt > 0.0 ? "dem.run.dt" : "dem.run.duration",
+                       "the run would take " + g(steps) + " time steps (" + g(simulated) + " s simulated at dt = " +
+                           g(dt) + " s), more than " + g(kMaxSteps) + ": it cannot finish; check run.dt and run.duration"};
+  return std::nullopt;
+}
+
+std::optional<CaseProblem> coupled_run_problem(const DemCase& dem, const ThermalCase& thermal,
+                                               const ReceiverCase* receiver) {
+  const auto& m = thermal.model.material;
+  const double d = dem.scene.particle.diameter, rho = dem.scene.particle.material.density;
+  if (std::abs(m.d / d - 1.0) > 1e-9)
+    return CaseProblem{"thermal.material.d", "the thermal particles (d = " + g(m.d) +
+                                                 " m) differ from the DEM's (dem.particles.diameter = " + g(d) +
+                                                 " m): make them equal"};
+  if (std::abs(m.rho_s / rho - 1.0) > 1e-9)
+    return CaseProblem{"thermal.material.rho_s", "the thermal particles (rho_s = " + g(m.rho_s) +
+                                                     " kg/m3) differ from the DEM's (dem.particles.density = " +
+                                                     g(rho) + " kg/m3): make them equal"};
+  const double D = receiver ? receiver->op.diameter : dem.scene.drum.diameter;
+  const auto& cav = thermal.model.cavity;
+  if (cav.enabled && cav.aperture_diameter > D * (1 + 1e-9))
+    return CaseProblem{"thermal.radiation.aperture_diameter", "exceeds the diameter " + g(D) + " m of the " +
+                                                                  (receiver ? "receiver" : "DEM drum")};
+  if (!(dem.sampling.turns > 0.0))
+    return CaseProblem{"dem.sampling.turns", "must be > 0 in a coupled case: the film comes from the DEM's sampled turns"};
+  return std::nullopt;
+}
+
+}  // namespace centrec::config

@@ -1,0 +1,187 @@
+// Case files that yaml-cpp accepts but that are wrong are refused with the line and key
+// (docs/reliability.md): duplicate keys, unterminated quotes, empty values, non-finite
+// numbers, integers beyond their range, invalid UTF-8, a misspelt section; and the reader
+// makes every check the DEM run makes before it starts, so `validate` refuses what `dem`
+// and `run` refuse.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "config/case_checks.hpp"
+#include "config/case_file.hpp"
+#include "io/film_field_h5.hpp"
+#include "io/h5_file.hpp"
+#include "tests/test_case_dir.hpp"
+#include "thermal/analytic_film.hpp"
+
+using namespace centrec;
+using centrec::testing::temp_dir;
+using centrec::testing::write_case;
+
+namespace {
+
+// The quickstart's drum, small enough to check quickly.
+const char* kDem = R"(dem:
+  drum: {diameter: 0.03, length: 0.04275, tilt_deg: 45, speed_rpm: 320.16}
+  feeder: {mass_flow: 8.925e-3, radial_offset_d: 10}
+  run: {duration: 1.5, dt: 2.0e-5}
+  sampling: {turns: 3}
+)";
+
+// The error reading `text` as a case file ("" = accepted).
+std::string error_of(const std::string& text) {
+  const std::string dir = temp_dir("refusals");
+  try {
+    config::read_case_file(write_case(dir, text));
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// `text` with the first `from` replaced by `to`.
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+#define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << "message: " << (msg)
+
+}  // namespace
+
+TEST(CaseRefusals, TheBaseCaseIsValid) { EXPECT_EQ(error_of(kDem), ""); }
+
+TEST(CaseRefusals, DuplicateKeysNameTheLine) {
+  const std::string inline_dup = error_of(with(kDem, "diameter: 0.03,", "diameter: 0.03, diameter: 7.0,"));
+  EXPECT_HAS(inline_dup, "case.yaml:2: dem.drum.diameter is given twice");
+  const std::string block_dup = error_of(std::string(kDem) + "dem:\n  drum: {diameter: 0.5}\n");
+  EXPECT_HAS(block_dup, "case.yaml:6: dem is given twice");
+}
+
+TEST(CaseRefusals, AnUnterminatedQuoteIsRefused) {
+  const std::string msg = error_of("title: \"quickstart\n" + std::string(kDem));
+  EXPECT_HAS(msg, "case.yaml:1: title: the quoted value has no closing \"");
+  EXPECT_HAS(error_of("title: 'it''s\n" + std::string(kDem)), "case.yaml:1: title");
+  EXPECT_EQ(error_of("title: 'it''s'\n" + std::string(kDem)), "");
+}
+
+TEST(CaseRefusals, AnEmptyValueIsNotTheDefault) {
+  EXPECT_HAS(error_of(with(kDem, "diameter: 0.03", "diameter: ")), "case.yaml:2: dem.drum.diameter has no value");
+  EXPECT_HAS(error_of("dem:\n  drum: null\n"), "case.yaml:2: dem.drum has no value");
+  EXPECT_HAS(error_of("dem:\n  drum: ~\n"), "dem.drum has no value");
+  EXPECT_HAS(error_of("dem:\n  run: {duration: 1, dt: }\n"), "dem.run.dt has no value");
+}
+
+TEST(CaseRefusals, NonFiniteNumbersAreRefused) {
+  for (const char* v : {"nan", "inf", "-inf", "1e400"})
+    EXPECT_HAS(error_of(with(kDem, "dt: 2.0e-5", std::string("dt: ") + v)), "dem.run.dt = '" + std::string(v) + "' is not a finite number");
+  EXPECT_HAS(error_of(with(kDem, "dt: 2.0e-5", "dt: .nan")), "is not a number");
+}
+
+TEST(CaseRefusals, IntegersBeyondTheirRangeSayWhatWasGiven) {
+  for (const char* v : {"1e300", "-1e300", "9223372036854775808"}) {
+    const std::string msg = error_of(std::string(kDem) + "  seed: " + v + "\n");
+    EXPECT_HAS(msg, std::string("dem.seed = ") + v + " is out of the allowed range [0, 2147483647]");
+    EXPECT_EQ(msg.find("-9223372036854775808"), std::string::npos) << msg;
+  }
+  EXPECT_HAS(error_of(std::string(kDem) + "  seed: inf\n"), "not a finite number");
+}
+
+TEST(CaseRefusals, InvalidUtf8NamesTheLine) {
+  const std::string msg = error_of("title: caf\xe9\n" + std::string(kDem));
+  EXPECT_HAS(msg, "case.yaml:1: the file is not valid UTF-8");
+  EXPECT_EQ(error_of("title: caf\xc3\xa9\n" + std::string(kDem)), "");
+}
+
+TEST(CaseRefusals, AMisspeltSectionIsAnUnknownKeyWithTheRightList) {
+  const std::string upper = error_of(with(kDem, "dem:", "DEM:") + "receiver: {diameter: 0.12, length: 0.171, "
+                                                                 "speed_rpm: 160.08, mass_flow: 0.0357}\n");
+  EXPECT_HAS(upper, "case.yaml:1: unknown key 'DEM' (did you mean 'dem'?)");
+  const std::string thermall = error_of(std::string(kDem) + "thermall:\n  T_in: 900\n");
+  EXPECT_HAS(thermall, "unknown key 'thermall' (did you mean 'thermal'?)");
+  EXPECT_HAS(thermall, "known keys here: title, description, dem, receiver, film, thermal, sweep");
+  // Nested keys: each known key once, and a suggestion.
+  const std::string nested = error_of(with(kDem, "tilt_deg: 45", "tilt: 45"));
+  EXPECT_HAS(nested, "unknown key 'dem.drum.tilt' (did you mean 'tilt_deg'?)");
+}
+
+TEST(CaseRefusals, ValidateMakesTheChecksTheRunMakes) {
+  // Each was accepted by the reader and refused only by the run (or never).
+  EXPECT_HAS(error_of(with(kDem, "dt: 2.0e-5", "dt: 1e300")), "case.yaml:4: dem.run.dt: dt = 1e+300 s exceeds the stability bound");
+  EXPECT_HAS(error_of(with(kDem, "dt: 2.0e-5", "dt: 2.0e-4")), "exceeds the stability bound 3.237e-05 s");
+  EXPECT_HAS(error_of(with(kDem, "diameter: 0.03", "diameter: 1e-300")), "must exceed 20 particle diameters");
+  EXPECT_HAS(error_of(with(kDem, "speed_rpm: 320.16", "speed_rpm: 1e300")), "dem.drum.speed_rpm = 1e+300 is out of the allowed range");
+  EXPECT_HAS(error_of(with(kDem, "speed_rpm: 320.16", "speed_rpm: 0")), "must be non-zero");
+  // A step count that cannot finish (the hang of dt 1e-300).
+  EXPECT_HAS(error_of(with(kDem, "dt: 2.0e-5", "dt: 1e-300")), "time steps");
+  EXPECT_HAS(error_of(with(kDem, "duration: 1.5", "duration: 1e9")), "cannot finish");
+  // A feed the feeder region cannot insert.
+  EXPECT_HAS(error_of(with(kDem, "mass_flow: 8.925e-3", "mass_flow: 1e300")), "dem.feeder.mass_flow: the feed 1e+300 kg/s exceeds what the feeder region can insert");
+  EXPECT_HAS(error_of(std::string(kDem) + "  initial_film: {particles: 100000000}\n"), "do not fit in the drum");
+}
+
+TEST(CaseRefusals, TheTimeStepAdviceMatchesTheEngines) {
+  // The engine prints these for the quickstart (Rayleigh time 8.763e-5 s, Hertz 1.619e-4 s).
+  const std::string dir = temp_dir("refusals");
+  const config::CaseFile cf = config::read_case_file(write_case(dir, kDem));
+  const dem::TimeStepAdvice a = config::dem_time_step_advice(*cf.dem);
+  EXPECT_NEAR(a.stable_bound, 3.237e-5, 0.001e-5);
+  EXPECT_NEAR(a.recommended, 8.763e-6, 0.001e-6);
+  const std::string said = config::time_step_statement(a, 2e-5);
+  EXPECT_HAS(said, "dt = 2e-05 s from run.dt: within the stability bound 3.237e-05 s");
+}
+
+TEST(CaseRefusals, TheDemOfAReceiverCaseIsTheDerivedDrum) {
+  // `centrec dem` and `centrec run` simulate the drum receiver.dem_diameter_d derives.
+  const config::CaseFile cf = config::read_case_file(CENTREC_SOURCE_DIR "/cases/receiver_1m.yaml");
+  const config::DemCase d = config::effective_dem(*cf.dem, &*cf.receiver, {});
+  EXPECT_NEAR(d.scene.drum.diameter, 21 * d.scene.particle.diameter, 1e-12);
+  EXPECT_NE(d.scene.drum.diameter, cf.dem->scene.drum.diameter);
+}
+
+TEST(CaseRefusals, AFilmFileWithAbsurdVelocitiesIsRefused) {
+  const std::string dir = temp_dir("refusals_film");
+  thermal::AnalyticFilm a;
+  a.d = 1.2e-3;
+  thermal::FilmField f = thermal::analytic_film(a);
+  f.u[f.u.size() / 2] = 1e300;
+  {
+    io::H5File h = io::H5File::create(dir + "/film.h5");
+    io::write_film_field(h, f);
+    h.commit();
+  }
+  const std::string msg = error_of("film: {file: " + dir + "/film.h5}\nthermal: {grid: {nz: 10, nxi: 4}}\n");
+  EXPECT_HAS(msg, "film.file");
+  EXPECT_HAS(msg, "is not that of a particle film");
+}
+
+TEST(CaseRefusals, ADirectoryOrMissingFileIsNamed) {
+  const std::string dir = temp_dir("refusals_dir");
+  try {
+    config::read_case_file(dir);
+    ADD_FAILURE();
+  } catch (const config::ConfigError& e) {
+    EXPECT_HAS(std::string(e.what()), "not a case file");
+  }
+  try {
+    config::read_case_file(dir + "/none.yaml");
+    ADD_FAILURE();
+  } catch (const config::ConfigError& e) {
+    EXPECT_HAS(std::string(e.what()), "no such case file");
+  }
+}
+
+TEST(CaseRefusals, ThermalSetUpChecksAreMadeByTheReader) {
+  // The cavity case with an aperture wider than its drum, and a grid no band solver holds:
+  // the thermal run refused them only as it set up; now the reader does.
+  std::ifstream in(CENTREC_SOURCE_DIR "/cases/thermal_centrec_cavity.yaml");
+  const std::string cavity((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_HAS(error_of(with(cavity, "aperture_diameter: 0.7", "aperture_diameter: 5.0")),
+             "thermal.radiation.aperture_diameter: exceeds the drum diameter");
+  EXPECT_HAS(error_of(with(cavity, "grid: {nz: 200, nxi: 40}", "grid: {nz: 100000, nxi: 2000}")),
+             "GB for its band Jacobian");
+}

@@ -1,0 +1,122 @@
+// Command-line misuse (docs/reliability.md): every usage error is one line on stderr naming
+// the problem (exit 2), every numeric flag is checked and never silently replaced, an
+// unwritable --out is refused before any work, `--version` answers.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/reliability/run_binary.hpp"
+#include "tests/test_case_dir.hpp"
+
+using centrec::testing::BinaryRun;
+using centrec::testing::run_binary;
+using centrec::testing::temp_dir;
+
+namespace {
+const std::string kQuick = CENTREC_SOURCE_DIR "/cases/quickstart.yaml";
+const std::string kThermal = CENTREC_SOURCE_DIR "/cases/thermal_centrec_uniform.yaml";
+
+// A usage error: exit 2, nothing on stdout, one line on stderr holding `part`.
+void expect_usage_error(const std::vector<std::string>& args, const std::string& part) {
+  const BinaryRun r = run_binary(args, 20.0);
+  std::string cmd;
+  for (const auto& a : args) cmd += a + " ";
+  EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.err;
+  EXPECT_EQ(r.signal, 0) << cmd;
+  EXPECT_NE(r.err.find(part), std::string::npos) << cmd << "\nstderr: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << cmd << "\nstderr: " << r.err;
+  EXPECT_EQ(r.out, "") << cmd;
+  EXPECT_EQ(r.err.find("stoi"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("stod"), std::string::npos) << r.err;
+}
+}  // namespace
+
+TEST(CliUsage, MissingOutAndUnknownFlagsSayWhatIsWrong) {
+  expect_usage_error({"thermal", kThermal}, "--out is required");
+  expect_usage_error({"thermal"}, "no case file given");
+  expect_usage_error({"validate"}, "no case file given");
+  expect_usage_error({"dem", kQuick, "--threds", "2"}, "unknown option '--threds' (did you mean '--threads'?)");
+  expect_usage_error({"run", kQuick, "--out", "x", "--mas-flow", "1"}, "did you mean '--mass-flow'?");
+  expect_usage_error({"dem", kQuick, "--out"}, "--out");
+}
+
+TEST(CliUsage, NumericFlagsAreCheckedNotReplaced) {
+  for (const char* v : {"100000", "-7", "1.5", "abc", "1e3"})
+    expect_usage_error({"dem", kQuick, "--out", "x", "--threads", v}, "--threads");
+  expect_usage_error({"dem", kQuick, "--threads", "100000"}, "out of the allowed range [0, 1024]");
+  for (const char* v : {"0", "-1", "nan", "inf", "abc"})
+    expect_usage_error({"dem", kQuick, "--out", "x", "--duration", v}, "--duration");
+  expect_usage_error({"dem", kQuick, "--duration", "nan"}, "'nan' is not a finite number");
+  for (const char* v : {"-5", "0", "nan", "1e300"})
+    expect_usage_error({"run", kQuick, "--out", "x", "--speed-rpm", v}, "--speed-rpm");
+  for (const char* v : {"0", "-1", "inf"})
+    expect_usage_error({"run", kQuick, "--out", "x", "--mass-flow", v}, "--mass-flow");
+  expect_usage_error({"run", kQuick, "--out", "x", "--threads", "-7"}, "--threads");
+  // A duration the run cannot finish: refused with the reason, naming the flag.
+  expect_usage_error({"dem", kQuick, "--out", "x", "--duration", "1e12"}, "with --duration 1e+12: ");
+}
+
+TEST(CliUsage, VersionAndUnknownCommands) {
+  const BinaryRun v = run_binary({"--version"});
+  EXPECT_EQ(v.exit_code, 0);
+  EXPECT_EQ(v.out.rfind("centrec ", 0), 0u) << v.out;
+  const BinaryRun u = run_binary({"valdate", kQuick});
+  EXPECT_EQ(u.exit_code, 2);
+  EXPECT_NE(u.err.find("unknown command 'valdate' (did you mean 'validate'?)"), std::string::npos) << u.err;
+}
+
+TEST(CliUsage, AnUnwritableOutIsRefusedBeforeWork) {
+  if (::geteuid() == 0) {
+    // root writes anywhere: a file in the way of the folder stands in for no permission.
+    const std::string dir = temp_dir("cli_out");
+    std::ofstream(dir + "/file") << "x";
+    const BinaryRun r = run_binary({"thermal", kThermal, "--out", dir + "/file"}, 20.0);
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("cannot write to " + dir + "/file"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "");  // refused before the solve printed anything
+    return;
+  }
+  const std::string dir = temp_dir("cli_out");
+  ::chmod(dir.c_str(), 0500);
+  const BinaryRun r = run_binary({"thermal", kThermal, "--out", dir + "/out"}, 20.0);
+  ::chmod(dir.c_str(), 0700);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("cannot"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
+TEST(CliUsage, AFailedRunLeavesNoEmptyFolders) {
+  // A DEM that fails as it builds the drum (more pre-filled particles than its packing
+  // places, though fewer than the densest packing the case check allows): `run` created
+  // the output and cache folders and removes them again.
+  const std::string dir = temp_dir("cli_empty");
+  std::filesystem::remove_all(dir + "/out");
+  std::filesystem::remove_all(dir + "/cache");
+  std::ofstream(dir + "/case.yaml") << "dem:\n  drum: {diameter: 0.03, length: 0.04275, speed_rpm: 320.16}\n"
+                                       "  initial_film: {particles: 22000}\n"
+                                       "  run: {duration: 0.01, dt: 2.0e-5}\n  sampling: {turns: 1}\n"
+                                       "thermal: {grid: {nz: 10, nxi: 4}}\n";
+  const BinaryRun r = run_binary({"run", dir + "/case.yaml", "--out", dir + "/out/a", "--cache", dir + "/cache", "--allow-small-drum"}, 60.0);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("do not fit"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out")) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/cache")) << r.err;
+}
+
+TEST(CliUsage, AFeedTheFeederCannotDeliverIsWarned) {
+  // 0.3 kg/s is below the densest-packing bound the case check refuses above, but far more
+  // than random insertion into the feeder region achieves: the run says so.
+  const std::string dir = temp_dir("cli_feed");
+  std::ofstream(dir + "/case.yaml") << "dem:\n  drum: {diameter: 0.03, length: 0.04275, speed_rpm: 320.16}\n"
+                                       "  feeder: {mass_flow: 0.3}\n"
+                                       "  run: {duration: 0.02, dt: 2.0e-5, threads: 1, checkpoint_interval: 0}\n";
+  const BinaryRun r = run_binary({"dem", dir + "/case.yaml", "--out", dir + "/out"}, 60.0);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: the feeder delivered"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("of the 300 g/s asked"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,185 @@
+// Fuzzing the case reader (docs/reliability.md): a few hundred mutations of the shipped
+// cases (fixed seed) through `centrec validate`. None may crash or hang; every refusal must
+// name the line (file:N) or the key it concerns. Prints the table of categories tried /
+// refused clearly / accepted / unclear / crash / hang that docs/reliability.md reports.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <random>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "tests/reliability/run_binary.hpp"
+#include "tests/test_case_dir.hpp"
+
+using centrec::testing::BinaryRun;
+using centrec::testing::run_binary;
+
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> v;
+  std::size_t a = 0;
+  for (std::size_t b; (b = text.find('\n', a)) != std::string::npos; a = b + 1) v.push_back(text.substr(a, b - a));
+  if (a < text.size()) v.push_back(text.substr(a));
+  return v;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& l : v) s += l + "\n";
+  return s;
+}
+
+// Lines that hold a value (not comments or blank lines).
+std::vector<std::size_t> content_lines(const std::vector<std::string>& v) {
+  std::vector<std::size_t> idx;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (v[i].find_first_not_of(' ') != std::string::npos && v[i][v[i].find_first_not_of(' ')] != '#') idx.push_back(i);
+  return idx;
+}
+
+struct Mutator {
+  std::mt19937_64 rng;
+  std::size_t pick(std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); }
+  template <class T>
+  const T& any(const std::vector<T>& v) { return v[pick(v.size())]; }
+
+  // Mutates `text` by one operator of `category`; returns the new text.
+  std::string apply(const std::string& category, const std::string& text) {
+    std::vector<std::string> v = lines_of(text);
+    const std::vector<std::size_t> c = content_lines(v);
+    if (c.empty()) return text + "x: 1\n";  // a case truncated to nothing: give it a line
+    std::string& line = v[any(c)];
+    if (category == "number") {
+      static const std::vector<std::string> bad = {"0", "-1", "1e300", "-1e300", "1e-300", "nan", "inf", "-inf", ".nan",
+                                                   ".inf", "1e400", "9223372036854775808", "-9223372036854775809",
+                                                   "abc", "0x10", "1_000", "1,5", "\"2\"", "[1, 2]", "{a: 1}", "true",
+                                                   "2.0e-4", "1e9", "-0", "3.5"};
+      // Replace one number of the line, or append one as a value of a new key.
+      static const std::regex num(R"([-+]?[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?)");
+      std::vector<std::pair<std::size_t, std::size_t>> spans;
+      for (auto it = std::sregex_iterator(line.begin(), line.end(), num); it != std::sregex_iterator(); ++it)
+        spans.emplace_back(it->position(), it->length());
+      if (spans.empty()) return text;
+      const auto [at, len] = any(spans);
+      line.replace(at, len, any(bad));
+    } else if (category == "structure") {
+      const int op = static_cast<int>(pick(5));
+      const std::size_t i = any(c);
+      if (op == 0) v.erase(v.begin() + static_cast<long>(i));                       // delete a line
+      else if (op == 1) v.insert(v.begin() + static_cast<long>(i), v[i]);           // duplicate a line (key twice)
+      else if (op == 2) std::swap(v[i], v[any(c)]);                                 // swap two lines
+      else if (op == 3) v[i] = "  " + v[i];                                         // indent
+      else if (v[i].rfind("  ", 0) == 0) v[i] = v[i].substr(2);                     // dedent
+    } else if (category == "key") {
+      const std::size_t colon = line.find(':');
+      if (colon == std::string::npos) return text;
+      const std::size_t start = line.find_first_not_of(" {-");
+      if (start >= colon) return text;
+      std::string key = line.substr(start, colon - start);
+      const int op = static_cast<int>(pick(4));
+      if (op == 0) for (char& ch : key) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+      else if (op == 1 && key.size() > 1) key.erase(pick(key.size()), 1);
+      else if (op == 2) key += "s";
+      else key = "unknown_" + key;
+      line.replace(start, colon - start, key);
+    } else if (category == "value") {
+      const std::size_t colon = line.find(':');
+      if (colon == std::string::npos) return text;
+      const int op = static_cast<int>(pick(4));
+      if (op == 0) line = line.substr(0, colon + 1);               // empty value (a whole section or a number)
+      else if (op == 1) line = line.substr(0, colon + 1) + " null";
+      else if (op == 2) line = line.substr(0, colon + 1) + " \"unterminated";
+      else line = line.substr(0, colon + 1) + " '" + line.substr(colon + 1);
+    } else if (category == "bytes") {
+      static const std::vector<std::string> junk = {"\xff", "\xc3", "\xe2\x82", "\t", "\"", "'", ":", "{", "}", "[",
+                                                    "]", "- ", "&a", "*a", "!!binary", "%", "@", "`", "\0", "\r",
+                                                    "? ", "|", ">", "#"};
+      std::string s = join(v);
+      const std::size_t at = pick(s.size() + 1);
+      const std::string& j = any(junk);
+      s.insert(at, j.empty() ? std::string(1, '\0') : j);
+      return s;
+    } else if (category == "truncate") {
+      const std::string s = join(v);
+      return s.substr(0, pick(s.size() + 1));
+    }
+    return join(v);
+  }
+};
+
+}  // namespace
+
+TEST(FuzzValidate, MutatedCasesNeverCrashHangOrRefuseVaguely) {
+  const std::string dir = centrec::testing::fresh_dir("fuzz");
+  // The flux table receiver_1m.yaml reads, beside the mutated case.
+  std::filesystem::copy_file(CENTREC_SOURCE_DIR "/cases/receiver_flux.csv", dir + "/receiver_flux.csv");
+  const std::vector<std::string> seeds = {"quickstart.yaml", "receiver_1m.yaml", "d12.yaml", "d12_slice.yaml",
+                                          "thermal_centrec_uniform.yaml", "thermal_cloud_transient.yaml",
+                                          "thermal_centrec_cavity.yaml"};
+  std::vector<std::string> texts;
+  for (const auto& s : seeds) texts.push_back(slurp(CENTREC_SOURCE_DIR "/cases/" + s));
+  const std::vector<std::string> categories = {"number", "structure", "key", "value", "bytes", "truncate"};
+  constexpr int kPerCategory = 50;
+
+  struct Tally {
+    int tried = 0, refused = 0, accepted = 0, unclear = 0, crash = 0, hang = 0;
+  };
+  std::map<std::string, Tally> tally;
+  Mutator m{std::mt19937_64(20261202)};
+  const std::string path = dir + "/case.yaml";
+  // A clear refusal names the file and a line, or the file and a key path.
+  const std::regex clear("case\\.yaml(:[0-9]+: |: [A-Za-z_]+[.:\\[ ]| \\(resolved configuration\\)|: (no such|not a|the case|larger))");
+  for (const auto& cat : categories) {
+    for (int k = 0; k < kPerCategory; ++k) {
+      const std::size_t which = m.pick(texts.size());
+      std::string text = m.apply(cat, texts[which]);
+      if (m.pick(4) == 0) text = m.apply(cat, text);  // sometimes two mutations
+      std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+      const BinaryRun r = run_binary({"validate", path}, 10.0);
+      Tally& t = tally[cat];
+      ++t.tried;
+      if (r.timed_out) {
+        ++t.hang;
+        ADD_FAILURE() << "hang on a mutation of " << seeds[which] << ":\n" << text;
+      } else if (r.signal != 0) {
+        ++t.crash;
+        ADD_FAILURE() << "signal " << r.signal << " on a mutation of " << seeds[which] << ":\n" << text;
+      } else if (r.exit_code == 0) {
+        ++t.accepted;
+      } else if (std::regex_search(r.err, clear) && r.exit_code == 2 &&
+                 std::count(r.err.begin(), r.err.end(), '\n') == 1) {
+        ++t.refused;
+      } else {
+        ++t.unclear;
+        ADD_FAILURE() << "unclear refusal (exit " << r.exit_code << "): " << r.err << "of a mutation of " << seeds[which]
+                      << ":\n" << text;
+      }
+    }
+  }
+  std::printf("| category | tried | refused clearly | accepted | unclear | crash | hang |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  Tally all;
+  for (const auto& cat : categories) {
+    const Tally& t = tally[cat];
+    std::printf("| %s | %d | %d | %d | %d | %d | %d |\n", cat.c_str(), t.tried, t.refused, t.accepted, t.unclear,
+                t.crash, t.hang);
+    all.tried += t.tried, all.refused += t.refused, all.accepted += t.accepted, all.unclear += t.unclear;
+    all.crash += t.crash, all.hang += t.hang;
+  }
+  std::printf("| all | %d | %d | %d | %d | %d | %d |\n", all.tried, all.refused, all.accepted, all.unclear, all.crash,
+              all.hang);
+  EXPECT_EQ(all.tried, kPerCategory * static_cast<int>(categories.size()));
+  std::filesystem::remove_all(dir);
+}

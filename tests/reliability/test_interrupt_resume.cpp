@@ -1,0 +1,142 @@
+// Ctrl-C loses nothing (docs/reliability.md): `centrec dem` sent SIGINT at a random
+// moment (fixed seed) writes a checkpoint at its next safe point, says how to resume and
+// exits with 128 + 2; `centrec dem --resume` then ends bitwise identical to the run left
+// alone, with the first run's --duration (kept in the checkpoint) and a summary.json that
+// reports it.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <string>
+
+#include "io/h5_file.hpp"
+#include "tests/reliability/run_binary.hpp"
+#include "tests/scene/resume_case.hpp"
+#include "tests/test_case_dir.hpp"
+
+using centrec::testing::BinaryRun;
+using centrec::testing::run_binary;
+
+namespace {
+
+// The small fed drum of the resume tests with a long run.duration that --duration
+// shortens; checkpoints only at the end and at the interrupt.
+std::string interrupt_case() {
+  std::string text = centrec::testing::kResumeCase;
+  text.replace(text.find("duration: 0.04"), 14, "duration: 5.00");
+  text.replace(text.find("checkpoint_interval: 1.0e-9"), 27, "checkpoint_interval: 0");
+  return text;
+}
+
+std::vector<double> dataset(const std::string& dir, const std::string& path) {
+  return centrec::io::H5File::open_read(dir + "/dem.h5").read(path);
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+TEST(InterruptResume, SigintCheckpointsAndTheResumedRunEqualsTheWholeOne) {
+  const std::string dir = centrec::testing::fresh_dir("interrupt");
+  const std::string case_path = centrec::testing::write_case(dir, interrupt_case());
+  const std::string whole = dir + "/whole", stopped = dir + "/stopped";
+  const auto t0 = std::chrono::steady_clock::now();
+  const BinaryRun w = run_binary({"dem", case_path, "--out", whole, "--duration", "0.06"}, 300.0);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+
+  // SIGINT somewhere in the run (set-up excluded: before it the default action applies).
+  std::mt19937_64 rng(28);
+  const double at = std::uniform_real_distribution<double>(0.35, 0.8)(rng) * wall;
+  const BinaryRun s = run_binary({"dem", case_path, "--out", stopped, "--duration", "0.06"}, 300.0, at);
+  std::printf("whole run %.2f s of wall time; SIGINT at %.2f s; stderr:\n%s\n", wall, at, s.err.c_str());
+  ASSERT_EQ(s.exit_code, 130) << s.err;
+  EXPECT_NE(s.err.find("stopped by SIGINT at t = "), std::string::npos) << s.err;
+  EXPECT_NE(s.err.find("continue with: centrec dem --resume " + stopped), std::string::npos) << s.err;
+  ASSERT_TRUE(std::filesystem::exists(stopped + "/checkpoint.h5"));
+  EXPECT_FALSE(std::filesystem::exists(stopped + "/summary.json"));
+
+  // --duration cannot change the resumed run (it is stored), and the resumed run keeps it.
+  const BinaryRun again = run_binary({"dem", "--resume", stopped, "--duration", "1"}, 30.0);
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("continues to the run.duration stored in"), std::string::npos) << again.err;
+  const BinaryRun r = run_binary({"dem", "--resume", stopped}, 300.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  std::size_t compared = 0;
+  for (const char* p : {"/mass_flow/time", "/mass_flow/fed", "/mass_flow/out", "/mass_flow/holdup",
+                        "/film/thickness_mean", "/film/axial_velocity_mean", "/film/solid_fraction_mean"}) {
+    const auto a = dataset(whole, p), b = dataset(stopped, p);
+    ASSERT_EQ(a.size(), b.size()) << p;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      if (a[i] != a[i] && b[i] != b[i]) continue;  // NaN: an empty bin in both
+      ASSERT_EQ(std::memcmp(&a[i], &b[i], sizeof(double)), 0) << p << "[" << i << "]";
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 100u);
+  // summary.json reports what ran: the --duration of the first command.
+  const std::string summary = slurp(stopped + "/summary.json");
+  EXPECT_NE(summary.find("duration: 0.06"), std::string::npos);
+  EXPECT_EQ(summary.find("duration: 5"), std::string::npos);  // the case file's
+  const double t_end = dataset(stopped, "/mass_flow/time").back();
+  EXPECT_LT(t_end, 0.5);  // 0.06 s + 2 turns of 0.187 s, not 5 s
+  std::printf("%zu values bitwise equal; the resumed run ended at t = %.4f s\n", compared, t_end);
+  std::filesystem::remove_all(dir);
+}
+
+namespace {
+// The one entry CACHE/<key> a coupled run made.
+std::string cache_entry(const std::string& cache) {
+  for (const auto& e : std::filesystem::directory_iterator(cache))
+    if (e.is_directory() && e.path().filename().string().find(".tmp") == std::string::npos) return e.path().string();
+  return "";
+}
+}  // namespace
+
+TEST(InterruptResume, SigintDuringTheDemOfARunAndTheSameCommandAgainEqualsTheWholeRun) {
+  const std::string dir = centrec::testing::fresh_dir("interrupt_run");
+  const std::string kCase = CENTREC_SOURCE_DIR "/tests/coupling/small_coupled.yaml";
+  const auto t0 = std::chrono::steady_clock::now();
+  const BinaryRun w = run_binary({"run", kCase, "--out", dir + "/whole", "--cache", dir + "/cache_whole", "--no-plots", "--allow-small-drum", "--allow-unsteady"}, 600.0);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+
+  std::mt19937_64 rng(2828);
+  const double at = std::uniform_real_distribution<double>(0.3, 0.6)(rng) * wall;
+  const std::vector<std::string> cmd = {"run", kCase, "--out", dir + "/stopped", "--cache", dir + "/cache", "--no-plots", "--allow-small-drum", "--allow-unsteady"};
+  const BinaryRun s = run_binary(cmd, 600.0, at);
+  std::printf("whole run %.2f s; SIGINT at %.2f s; stderr:\n%s\n", wall, at, s.err.c_str());
+  ASSERT_EQ(s.exit_code, 130) << s.err;
+  EXPECT_NE(s.err.find("continue with the same command"), std::string::npos) << s.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/stopped")) << "the empty output folder was left behind";
+  const BinaryRun r = run_binary(cmd, 600.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("continuing the interrupted DEM run"), std::string::npos) << r.err;
+
+  const std::string a = cache_entry(dir + "/cache_whole"), b = cache_entry(dir + "/cache");
+  ASSERT_FALSE(a.empty());
+  ASSERT_FALSE(b.empty());
+  std::size_t compared = 0;
+  for (const char* p : {"/mass_flow/time", "/mass_flow/out", "/film/thickness_mean", "/film/axial_velocity_mean"}) {
+    const auto x = dataset(a, p), y = dataset(b, p);
+    ASSERT_EQ(x.size(), y.size()) << p;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (x[i] != x[i] && y[i] != y[i]) continue;
+      ASSERT_EQ(std::memcmp(&x[i], &y[i], sizeof(double)), 0) << p << "[" << i << "]";
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 50u);
+  const auto ta = centrec::io::H5File::open_read(dir + "/whole/results.h5").read("/steady/T");
+  const auto tb = centrec::io::H5File::open_read(dir + "/stopped/results.h5").read("/steady/T");
+  ASSERT_EQ(ta.size(), tb.size());
+  EXPECT_EQ(std::memcmp(ta.data(), tb.data(), ta.size() * sizeof(double)), 0);
+  std::filesystem::remove_all(dir);
+}
