@@ -11,6 +11,7 @@
 #include "config/case_receiver.hpp"
 #include "config/strict_yaml.hpp"
 #include "coupling/scaling_laws.hpp"
+#include "coupling/scaling_laws.hpp"
 #include "io/atomic_write.hpp"
 
 namespace centrec::cli {
@@ -193,6 +194,10 @@ int cmd_scale(const Args& args) {
   std::printf("\nscale factor r_sim/r_act = %.6g; film thickness in d and velocities are unchanged;\n"
               "axial positions scale with L. Valid while D >> d (here D/d = %.4g).\n",
               sim.diameter / act.diameter, sim.diameter / d);
+  const std::string small = coupling::scale_down_validity(sim.diameter, d);
+  if (!small.empty())
+    std::fprintf(stderr, "centrec scale: warning: %s; `centrec run` refuses it without --allow-small-drum\n",
+                 small.c_str());
   if (!r.yaml_out.empty()) {
     io::write_text_atomically(r.yaml_out, yaml_snippet(act, sim, d, n_sim, g));
     std::printf("wrote %s\n", r.yaml_out.c_str());

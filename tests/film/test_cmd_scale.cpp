@@ -163,3 +163,19 @@ TEST(ScaleCommand, ClearErrors) {
   std::filesystem::remove(in);
   EXPECT_EQ(cmd_scale({"--help"}), 0);
 }
+
+// A target below the scale-down laws' validity threshold is warned about (and still scaled:
+// a study may go there); at or above it nothing is said.
+TEST(ScaleCommand, WarnsBelowTheValidityThreshold) {
+  const std::string in = std::string(CENTREC_SOURCE_DIR) + "/cases/quickstart.yaml";
+  ::testing::internal::CaptureStderr();
+  ASSERT_EQ(cmd_scale({"--input", in, "--target-d-over-d", "25"}), 0);
+  const std::string below = ::testing::internal::GetCapturedStderr();
+  ::testing::internal::CaptureStderr();
+  ASSERT_EQ(cmd_scale({"--input", in, "--target-d-over-d", "80"}), 0);
+  const std::string at = ::testing::internal::GetCapturedStderr();
+  std::printf("D/d 25: %sD/d 80: '%s'\n", below.c_str(), at.c_str());
+  EXPECT_NE(below.find("D/d = 25, below the scale-down laws' validity threshold D/d = 80"), std::string::npos);
+  EXPECT_NE(below.find("docs/validity_threshold.md"), std::string::npos);
+  EXPECT_EQ(at.find("warning"), std::string::npos);
+}
