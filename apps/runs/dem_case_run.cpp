@@ -131,13 +131,15 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
       stop_if_interrupted("spin-up");
     }
     bool told = false;
-    while (sim.time() < cap - 0.5 * sim.dt() && !steadiness().steady) {
-      if (!told) std::fprintf(stderr, "  not steady at t = %.4g s (%s): spin-up extended, up to t = %.4g s\n",
-                              sim.time(), steadiness().describe().c_str(), cap);
+    for (auto st = steadiness(); sim.time() < cap - 0.5 * sim.dt() && !st.steady; st = steadiness()) {
+      if (!told)
+        std::fprintf(stderr, "  not steady at t = %.4g s (%s): spin-up extended, up to t = %.4g s\n", sim.time(),
+                     st.describe().c_str(), cap);
       told = true;
       advance([&] { scene.advance(std::min(chunk, cap - sim.time())); });
       sim.rebuild_lists();
       checkpoint("spin-up", false);
+      stop_if_interrupted("spin-up");
     }
     if (told) std::fprintf(stderr, "  spin-up ended at t = %.4g s: %s\n", sim.time(), steadiness().describe().c_str());
   }

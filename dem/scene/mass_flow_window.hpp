@@ -34,8 +34,8 @@ struct FlowSteadiness {
   double holdup_drift = 0.0;  // holdup_end / holdup_start - 1
   double window = 0.0;        // s
   bool steady = false;
-  std::string describe() const;  // one line: "outlet 8.1 vs feed 8.9 g/s (-9.4 %), holdup +0.3 %: not steady"
   bool slice = false;
+  std::string describe() const;  // one line: "outlet 8.1 vs feed 8.9 g/s (-9.4 %), holdup +0.3 %: not steady"
 };
 
 FlowSteadiness flow_steadiness(const std::vector<MassFlowSample>& log, const SceneConfig& scene, double window,
