@@ -49,10 +49,15 @@ void print_sweep_help() {
 pid_t start_point(const std::string& exe, const std::string& case_path, const std::string& cache, const Point& p,
                   bool allow_small_drum) {
   io::ensure_directory(p.dir);
-  std::vector<std::string> argv_s = {exe,          "run",         case_path,  "--out",
-                                     p.dir,        "--cache",     cache,      "--speed-rpm",
-                                     std::to_string(p.rpm), "--mass-flow", std::to_string(p.mdot), "--threads",
-                                     "1",          "--no-plots",  "--allow-unsteady"};
+  // Full precision: std::to_string's six decimals would turn 1e-7 kg/s into 0.
+  auto exact = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.17g", v);
+    return std::string(b);
+  };
+  std::vector<std::string> argv_s = {exe,   "run",     case_path, "--out",         p.dir,
+                                     "--cache", cache, "--speed-rpm", exact(p.rpm), "--mass-flow",
+                                     exact(p.mdot), "--threads", "1", "--no-plots", "--allow-unsteady"};
   if (allow_small_drum) argv_s.push_back("--allow-small-drum");
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("centrec sweep: fork failed");
