@@ -47,8 +47,14 @@ void print_sweep_help() {
 ChildJob point_job(const std::string& exe, const std::string& case_path, const std::string& cache, const Point& p,
                    bool allow_small_drum, int replicas) {
   io::ensure_directory(p.dir);
-  ChildJob job{{exe, "run", case_path, "--out", p.dir, "--cache", cache, "--speed-rpm", std::to_string(p.rpm),
-                "--mass-flow", std::to_string(p.mdot), "--threads", "1", "--no-plots", "--allow-unsteady"},
+  // Full precision: std::to_string's six decimals would turn 1e-7 kg/s into 0.
+  auto exact = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.17g", v);
+    return std::string(b);
+  };
+  ChildJob job{{exe, "run", case_path, "--out", p.dir, "--cache", cache, "--speed-rpm", exact(p.rpm), "--mass-flow",
+                exact(p.mdot), "--threads", "1", "--no-plots", "--allow-unsteady"},
                p.dir + "/run.log"};
   if (allow_small_drum) job.argv.push_back("--allow-small-drum");
   if (replicas > 1) job.argv.insert(job.argv.end(), {"--replicas", std::to_string(replicas)});

@@ -21,6 +21,7 @@ int cmd_scale(const Args& args);
 int cmd_run(const Args& args);
 int cmd_sweep(const Args& args);
 int cmd_export_liggghts(const Args& args);
+int cmd_keys(const Args& args);
 
 // The table `main` dispatches on; add new subcommands here.
 const std::vector<Command>& commands();

@@ -21,6 +21,7 @@ const std::vector<Command>& commands() {
       {"thermal", "solve the film energy equation under solar flux: T_out, efficiency, k_eff", cmd_thermal},
       {"sweep", "operating map: coupled runs over speed x mass flow in parallel processes", cmd_sweep},
       {"validate", "check a YAML case and print its fully resolved configuration", cmd_validate},
+      {"keys", "print every case-file key with type, default, range, unit and meaning (Markdown)", cmd_keys},
   };
   return table;
 }

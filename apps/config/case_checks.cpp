@@ -112,6 +112,15 @@ std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived) {
     // The most the region can take per batch: filled at the densest packing of spheres.
     const double region = f.axial_length * f.radial_height * f.arc_width;
     const double capacity = 0.74 * region * s.particle.material.density / f.interval;
+    // A feed below one particle per drum turn forms no film in any run length the step
+    // count allows (1e-300 kg/s is a typo, not an operating point).
+    const double particle = dem::sphere_mass(s.particle.material.density, 0.5 * d);
+    const double per_turn = particle / dem::scene::turn_period(s);
+    if (f.mass_flow > 0.0 && f.mass_flow < per_turn)
+      return CaseProblem{derived ? "receiver.mass_flow" : "dem.feeder.mass_flow",
+                         "the feed " + g(f.mass_flow) + " kg/s delivers less than one particle (" + g(particle) +
+                             " kg) per drum turn (" + g(dem::scene::turn_period(s)) + " s): no film forms; give at least " +
+                             g(per_turn) + " kg/s, or 0 for no feed"};
     if (f.mass_flow > capacity)
       return CaseProblem{derived ? "receiver.mass_flow" : "dem.feeder.mass_flow",
                          "the feed " + g(f.mass_flow) + " kg/s exceeds what the feeder region can insert (" +
@@ -170,6 +179,30 @@ std::optional<CaseProblem> coupled_run_problem(const DemCase& dem, const Thermal
                                                                   (receiver ? "receiver" : "DEM drum")};
   if (!(dem.sampling.turns > 0.0))
     return CaseProblem{"dem.sampling.turns", "must be > 0 in a coupled case: the film comes from the DEM's sampled turns"};
+  return std::nullopt;
+}
+
+std::optional<CaseProblem> sweep_problem(const DemCase& dem, const ReceiverCase* receiver, const SweepSpec& sweep) {
+  const bool derived = receiver && receiver->dem_diameter_d > 0.0;
+  for (const double rpm : sweep.speed_rpm)
+    for (const double mdot : sweep.mass_flow) {
+      Overrides o;
+      o.speed_rpm = rpm;
+      o.mass_flow = mdot;
+      const std::string point = "the point " + g(rpm) + " rpm x " + g(mdot) + " kg/s";
+      std::optional<CaseProblem> p;
+      try {
+        p = dem_run_problem(effective_dem(dem, receiver, o), derived);
+      } catch (const std::invalid_argument& e) {
+        p = CaseProblem{"receiver", e.what()};
+      }
+      if (!p) continue;
+      // Name the swept value the refusal concerns: a speed, a flow, or the point.
+      const bool speed = p->key.find("speed_rpm") != std::string::npos || p->key.find("run.") != std::string::npos;
+      const bool flow = p->key.find("mass_flow") != std::string::npos;
+      return CaseProblem{speed ? "sweep.speed_rpm" : flow ? "sweep.mass_flow" : "sweep",
+                         point + " cannot run (" + p->key + "): " + p->message};
+    }
   return std::nullopt;
 }
 

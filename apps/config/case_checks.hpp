@@ -9,6 +9,7 @@
 
 #include "config/case_dem.hpp"
 #include "config/case_receiver.hpp"
+#include "config/case_sweep.hpp"
 #include "config/case_thermal.hpp"
 #include "dem/timestep_advisor.hpp"
 
@@ -55,6 +56,11 @@ std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived = fal
 // within the drum the film is scaled to (the receiver's, or the DEM drum's without one).
 std::optional<CaseProblem> coupled_run_problem(const DemCase& dem, const ThermalCase& thermal,
                                                const ReceiverCase* receiver);
+
+// The checks of `centrec sweep`: every point of the grid is a `centrec run` with that
+// speed and mass flow (Overrides), so each must pass dem_run_problem. The key names the
+// swept list (sweep.speed_rpm, sweep.mass_flow) the refused value is in.
+std::optional<CaseProblem> sweep_problem(const DemCase& dem, const ReceiverCase* receiver, const SweepSpec& sweep);
 
 // A run of more time steps than this cannot finish (1e10 steps of even one particle are
 // days of wall time): a typo in run.dt or run.duration, refused before the run.

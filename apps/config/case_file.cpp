@@ -14,12 +14,12 @@ CaseFile read_case(MapReader root, const std::string& path) {
   c.path = path;
   // A misspelt section is reported as such before the sections are read.
   root.known_keys({"title", "description", "dem", "receiver", "film", "thermal", "sweep"});
-  c.title = root.string("title", "");
-  root.string("description", "");
-  if (root.has("dem")) c.dem = read_dem_case(root.child("dem"));
+  c.title = root.string("title", "", "a one-line name of the case, echoed into the outputs");
+  root.string("description", "", "free text about the case");
+  if (root.has("dem")) c.dem = read_dem_case(root.child("dem", "the DEM of the drum or slice (`centrec dem`, the DEM stage of `run`)"));
   if (root.has("receiver")) {
     if (!c.dem) root.fail("receiver", "a receiver is simulated through a scaled-down `dem:` section; add one");
-    c.receiver = read_receiver(root.child("receiver"), root.child("dem"));
+    c.receiver = read_receiver(root.child("receiver", "the full-size receiver a coupled run scales the film to"), root.child("dem"));
   }
   if (c.dem) {
     // What the DEM commands check before they start, on the drum they would simulate.
@@ -42,7 +42,9 @@ CaseFile read_case(MapReader root, const std::string& path) {
   }
   if (c.dem && c.thermal && c.thermal->film_source == "dem")
     if (const auto p = coupled_run_problem(*c.dem, *c.thermal, c.receiver ? &*c.receiver : nullptr)) root.fail_path(p->key, p->message);
-  if (root.has("sweep")) c.sweep = read_sweep(root.child("sweep"));
+  if (root.has("sweep")) c.sweep = read_sweep(root.child("sweep", "the operating map of `centrec sweep`: speed x mass flow"));
+  if (c.sweep && c.dem)
+    if (const auto p = sweep_problem(*c.dem, c.receiver ? &*c.receiver : nullptr, *c.sweep)) root.fail_path(p->key, p->message);
   root.finish();
   c.resolved_yaml = root.resolved_text();
   return c;
@@ -54,6 +56,12 @@ CaseFile read_case_file(const std::string& path) { return read_case(MapReader::f
 
 CaseFile read_case_text(const std::string& text, const std::string& path) {
   return read_case(MapReader::from_string(text, path + " (resolved configuration)"), path);
+}
+
+CaseFile read_case_recording(const std::string& text, const std::string& path, std::vector<KeyRecord>& keys) {
+  MapReader root = MapReader::from_string(text, path);
+  root.record_keys(&keys);
+  return read_case(root, path);
 }
 
 CaseFile with_overrides(const CaseFile& cf, const Overrides& o) {

@@ -4,6 +4,7 @@
 // that is absent is simply not configured, an unknown top-level key is an error.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "config/case_checks.hpp"
 #include "config/case_dem.hpp"
@@ -29,6 +30,11 @@ CaseFile read_case_file(const std::string& path);
 // The same from YAML text (a checkpoint's resolved configuration); `path` names the case
 // in messages and anchors its relative paths.
 CaseFile read_case_text(const std::string& text, const std::string& path);
+
+// Reads YAML text as read_case_text does, appending a KeyRecord to `keys` for every key
+// the readers are asked for (the key reference, apps/config/case_keys.hpp). On a
+// ConfigError the keys read before it stay in `keys`.
+CaseFile read_case_recording(const std::string& text, const std::string& path, std::vector<KeyRecord>& keys);
 
 // The case with the overrides' run.threads and run.duration written into its `dem:`
 // section, read again (and so checked again): the resolved configuration that outputs and

@@ -6,19 +6,23 @@
 namespace centrec::config {
 
 ReceiverSection read_receiver_section(MapReader r, bool complete) {
-  auto value = [&](const char* key, Range range, const char* unit) -> std::optional<double> {
+  auto value = [&](const char* key, Range range, const char* unit, const char* meaning) -> std::optional<double> {
     if (!complete && !r.has(key)) return std::nullopt;
-    return r.required_number(key, range, unit);
+    return r.required_number(key, range, unit, meaning);
   };
   ReceiverSection s;
-  s.diameter = value("diameter", Range::open_closed(0.0, 100.0), "m");
-  s.length = value("length", Range::open_closed(0.0, 1000.0), "m");
-  s.speed_rpm = value("speed_rpm", Range::open_closed(0.0, 1e5), "rpm");
-  s.mass_flow = value("mass_flow", Range::open_closed(0.0, 1e4), "kg/s");
-  s.tilt = r.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg") * M_PI / 180.0;
-  s.dem_diameter_d = r.number("dem_diameter_d", 0.0, Range::closed(0.0, 1e5), "d (0 = use dem.drum as given)");
+  s.diameter = value("diameter", Range::open_closed(0.0, 100.0), "m", "the receiver's drum diameter");
+  s.length = value("length", Range::open_closed(0.0, 1000.0), "m", "the receiver's drum length");
+  s.speed_rpm = value("speed_rpm", Range::open_closed(0.0, 1e5), "rpm", "the receiver's rotational speed");
+  s.mass_flow = value("mass_flow", Range::open_closed(0.0, 1e4), "kg/s", "the receiver's particle mass flow");
+  s.tilt = r.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg", "axis tilt from horizontal (as dem.drum.tilt_deg)") *
+           M_PI / 180.0;
+  s.dem_diameter_d = r.number("dem_diameter_d", 0.0, Range::closed(0.0, 1e5), "d (0 = use dem.drum as given)",
+                              "derive the DEM drum by eqs 1-3 at D = this x d (docs/scaling.md)");
   // Read only when given, so a case without it resolves (and caches) as before.
-  if (r.has("particle_diameter")) s.particle_diameter = value("particle_diameter", Range::open_closed(0.0, 1.0), "m");
+  if (r.has("particle_diameter"))
+    s.particle_diameter = value("particle_diameter", Range::open_closed(0.0, 1.0), "m",
+                                "the particles' diameter, checked against dem.particles.diameter");
   r.finish();
   return s;
 }

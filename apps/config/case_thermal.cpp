@@ -24,11 +24,13 @@ const Range kTemperature = Range::closed(1.0, 5000.0);  // K
 
 th::Material read_material(MapReader r) {
   th::Material m;
-  m.rho_s = r.number("rho_s", m.rho_s, Range::positive(), "kg/m3");
-  m.k_s = r.number("k_s", m.k_s, Range::positive(), "W/(m K)");
-  m.alpha = r.number("alpha", m.alpha, Range::closed(0.0, 1.0));
-  m.epsilon = r.number("epsilon", m.epsilon, Range::open_closed(0.0, 1.0));
-  m.d = r.number("d", m.d, Range::open_closed(0.0, 0.05), "m");
+  m.rho_s = r.number("rho_s", m.rho_s, Range::positive(), "kg/m3", "particle (solid) density");
+  m.k_s = r.number("k_s", m.k_s, Range::positive(), "W/(m K)", "solid conductivity of a particle");
+  m.alpha = r.number("alpha", m.alpha, Range::closed(0.0, 1.0), "", "solar absorptance of the film");
+  m.epsilon = r.number("epsilon", m.epsilon, Range::open_closed(0.0, 1.0), "",
+                       "thermal emissivity of the particles and the film surface");
+  m.d = r.number("d", m.d, Range::open_closed(0.0, 0.05), "m",
+                 "particle diameter (in a coupled case, that of dem.particles)");
   r.finish();
   return m;
 }
@@ -37,26 +39,31 @@ void read_film(MapReader r, const std::string& case_dir, double particle_d, Ther
   const bool analytic = r.has("analytic"), file = r.has("file");
   if (analytic == file) r.fail(analytic ? "file" : "analytic", "give exactly one of film.analytic or film.file");
   if (analytic) {
-    MapReader a = r.child("analytic");
+    MapReader a = r.child("analytic", "an analytic film: uniform thickness, a sheared velocity profile");
     th::AnalyticFilm af;
     af.d = particle_d;
-    af.thickness = a.number("thickness", af.thickness, Range::open_closed(0.0, 0.5), "m");
+    af.thickness = a.number("thickness", af.thickness, Range::open_closed(0.0, 0.5), "m",
+                            "film thickness (more than one particle diameter)");
     if (!(af.thickness > af.d))
       a.fail("thickness", "must exceed one particle diameter (got " + std::to_string(af.thickness) +
                               " m, thermal.material.d = " + std::to_string(af.d) +
                               " m): the resting layer is one diameter thick");
-    af.u_surface = a.number("u_surface", af.u_surface, Range::open_closed(0.0, 100.0), "m/s");
-    af.phi = a.number("phi", af.phi, Range::closed(0.05, 0.74));
-    af.D_uniform = a.number("D_uniform", af.D_uniform, Range::closed(0.0, 1.0), "m2/s");
-    af.D_shear_coeff = a.number("D_shear_coeff", af.D_shear_coeff, Range::closed(0.0, 10.0));
-    af.drum_diameter = a.number("drum_diameter", af.drum_diameter, Range::open_closed(0.0, 100.0), "m");
-    af.length = a.number("length", af.length, Range::open_closed(0.0, 100.0), "m");
+    af.u_surface = a.number("u_surface", af.u_surface, Range::open_closed(0.0, 100.0), "m/s",
+                            "axial velocity at the free surface");
+    af.phi = a.number("phi", af.phi, Range::closed(0.05, 0.74), "", "solid volume fraction");
+    af.D_uniform = a.number("D_uniform", af.D_uniform, Range::closed(0.0, 1.0), "m2/s",
+                            "particle dispersion coefficient added everywhere");
+    af.D_shear_coeff = a.number("D_shear_coeff", af.D_shear_coeff, Range::closed(0.0, 10.0), "",
+                                "c in the shear dispersion D = c gamma_dot d^2");
+    af.drum_diameter = a.number("drum_diameter", af.drum_diameter, Range::open_closed(0.0, 100.0), "m",
+                                "diameter of the drum the film lines");
+    af.length = a.number("length", af.length, Range::open_closed(0.0, 100.0), "m", "axial length of the film");
     a.finish();
     c.film = th::analytic_film(af);
     c.film_source = "analytic";
   } else {
-    const std::string path = resolve_path(case_dir, r.string("file", ""));
-    const std::string group = r.string("group", "/film");
+    const std::string path = resolve_path(case_dir, r.string("file", "", "a stored film field (film.h5 of `centrec run`), relative to the case file"));
+    const std::string group = r.string("group", "/film", "the HDF5 group of the film field in that file");
     try {
       c.film = io::read_film_field(io::H5File::open_read(path), group);
     } catch (const std::exception& e) {
@@ -74,17 +81,19 @@ void read_film(MapReader r, const std::string& case_dir, double particle_d, Ther
 
 th::TimeFactor read_time_factor(MapReader r) {
   th::TimeFactor f;
-  const std::string kind = r.choice("kind", "constant", {"constant", "step", "pulse"});
+  const std::string kind = r.choice("kind", "constant", {"constant", "step", "pulse"},
+                                    "time history of the factor: constant 1, a ramped step to `level`, or a dip and back");
   f.kind = kind == "step" ? th::TimeFactor::Kind::step
            : kind == "pulse" ? th::TimeFactor::Kind::pulse
                              : th::TimeFactor::Kind::constant;
   if (f.kind != th::TimeFactor::Kind::constant) {
-    f.level = r.number("level", 1.0, Range::closed(0.0, 100.0));
-    f.t_start = r.number("t_start", 0.0, Range::non_negative(), "s");
-    f.ramp = r.number("ramp", 0.0, Range::non_negative(), "s");
+    f.level = r.number("level", 1.0, Range::closed(0.0, 100.0), "", "the factor after the step (during the pulse)");
+    f.t_start = r.number("t_start", 0.0, Range::non_negative(), "s", "start of the step or pulse");
+    f.ramp = r.number("ramp", 0.0, Range::non_negative(), "s", "duration of each linear edge");
   }
   if (f.kind == th::TimeFactor::Kind::pulse) {
-    f.t_end = r.number("t_end", f.t_start + f.ramp, Range::non_negative(), "s");
+    f.t_end = r.number("t_end", f.t_start + f.ramp, Range::non_negative(), "s",
+                       "start of the pulse's return edge (default t_start + ramp)");
     if (f.t_end < f.t_start + f.ramp) r.fail("t_end", "must be >= t_start + ramp (the dip must finish its first edge)");
   }
   r.finish();
@@ -92,20 +101,22 @@ th::TimeFactor read_time_factor(MapReader r) {
 }
 
 void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
-  const std::string profile = r.choice("profile", "uniform", {"uniform", "gaussian", "table"});
+  const std::string profile = r.choice("profile", "uniform", {"uniform", "gaussian", "table"},
+                                       "shape of the solar flux along the drum");
   th::FluxProfile& f = m.flux;
   if (profile == "uniform") {
     f.kind = th::FluxProfile::Kind::uniform;
-    f.q = r.number("q", f.q, Range::closed(0.0, 2e7), "W/m2");
+    f.q = r.number("q", f.q, Range::closed(0.0, 2e7), "W/m2", "uniform solar flux (profile uniform; at the aperture for a cavity)");
   } else if (profile == "gaussian") {
     f.kind = th::FluxProfile::Kind::gaussian;
-    f.q = r.number("q_peak", f.q, Range::closed(0.0, 2e7), "W/m2");
-    f.z_center = r.number("z_center", f.z_center, Range::any(), "m");
-    f.sigma = r.number("sigma", f.sigma, Range::positive(), "m");
-    f.q_base = r.number("q_base", 0.0, Range::closed(0.0, 2e7), "W/m2");
+    f.q = r.number("q_peak", f.q, Range::closed(0.0, 2e7), "W/m2", "peak of the Gaussian flux");
+    f.z_center = r.number("z_center", f.z_center, Range::any(), "m", "axial position of the peak");
+    f.sigma = r.number("sigma", f.sigma, Range::positive(), "m", "standard deviation of the Gaussian along z");
+    f.q_base = r.number("q_base", 0.0, Range::closed(0.0, 2e7), "W/m2", "uniform flux added to the Gaussian");
   } else {
     f.kind = th::FluxProfile::Kind::table;
-    const std::string path = resolve_path(case_dir, r.string("table_file", ""));
+    const std::string path =
+        resolve_path(case_dir, r.string("table_file", "", "CSV of z (m) and q (W/m2), relative to the case file"));
     try {
       io::read_flux_table_csv(path, f.table_z, f.table_q);
       f.check();
@@ -117,25 +128,33 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
   // by default from the bed's solid fraction, thermal/film_model.hpp), uniform over n layers,
   // or at the surface.
   const std::string absorption =
-      r.choice("absorption", r.has("absorb_depth_layers") ? "layers" : "extinction", {"extinction", "layers", "surface"});
+      r.choice("absorption", r.has("absorb_depth_layers") ? "layers" : "extinction", {"extinction", "layers", "surface"},
+               "where the solar flux is absorbed: Beer-Lambert below the surface, uniformly over layers, or at "
+               "the surface (default layers when absorb_depth_layers is given)");
   if (absorption == "layers")
-    m.surface.absorb_depth_layers = r.number("absorb_depth_layers", 0.0, Range::closed(0.0, 20.0), "particle diameters");
+    m.surface.absorb_depth_layers = r.number("absorb_depth_layers", 0.0, Range::closed(0.0, 20.0), "particle diameters",
+                                             "depth over which the flux is absorbed uniformly");
   if (absorption == "extinction")
-    m.surface.extinction_depth_d = r.number("extinction_depth_d", -1.0, Range::closed(-1.0, 20.0), "particle diameters");
+    m.surface.extinction_depth_d = r.number("extinction_depth_d", -1.0, Range::closed(-1.0, 20.0), "particle diameters",
+                                            "Beer-Lambert extinction depth (absorption extinction; -1: from the solid fraction, (1 - phi) / (1.5 phi))");
   if (m.surface.extinction_depth_d == 0.0 && absorption == "extinction")
     r.fail("extinction_depth_d", "must be > 0 (or omitted for the value from the solid fraction)");
-  m.flux_time = read_time_factor(r.child("time"));
+  m.flux_time = read_time_factor(r.child("time", "a time history multiplying the flux (needs thermal.transient)"));
   r.finish();
 }
 
 void read_conductivity(MapReader r, th::FilmModel& m) {
-  const std::string model = r.choice("model", "zbs", {"zbs", "constant"});
-  if (model == "constant") m.conductivity.k_constant = r.required_number("k", Range::positive(), "W/(m K)");
-  m.bed.shape_factor = r.number("shape_factor", m.bed.shape_factor, Range::positive());
-  m.bed.flattening = r.number("flattening", m.bed.flattening, Range::closed(0.0, 1.0));
-  m.bed.radiation = r.boolean("radiation", true);
-  m.conductivity.mixing = r.boolean("mixing", true);
-  const std::string axial = r.choice("axial", "bed", {"bed", "bed_and_mixing", "none"});
+  const std::string model = r.choice("model", "zbs", {"zbs", "constant"},
+                                     "bed conductivity: Zehner-Bauer-Schluender with radiation, or a constant k");
+  if (model == "constant") m.conductivity.k_constant = r.required_number("k", Range::positive(), "W/(m K)", "the constant bed conductivity");
+  m.bed.shape_factor = r.number("shape_factor", m.bed.shape_factor, Range::positive(), "",
+                                "ZBS shape factor C_f (1.25 for spheres)");
+  m.bed.flattening = r.number("flattening", m.bed.flattening, Range::closed(0.0, 1.0), "",
+                              "ZBS contact flattening coefficient (0.0077 for spheres)");
+  m.bed.radiation = r.boolean("radiation", true, "add radiation between particles to the bed conductivity");
+  m.conductivity.mixing = r.boolean("mixing", true, "add the particles' dispersion (rho_s phi c_p D) to the conductivity");
+  const std::string axial = r.choice("axial", "bed", {"bed", "bed_and_mixing", "none"},
+                                     "conduction along z: the bed's, the bed's with mixing, or none");
   m.conductivity.axial = axial == "none" ? th::ConductivitySettings::Axial::none
                          : axial == "bed" ? th::ConductivitySettings::Axial::bed
                                           : th::ConductivitySettings::Axial::bed_and_mixing;
@@ -145,36 +164,42 @@ void read_conductivity(MapReader r, th::FilmModel& m) {
 void read_solver(MapReader r, ThermalCase& c) {
   th::IntegratorSettings& in = c.steady.integrator;
   // Ranges are what double precision and BDF can deliver (1e-30 is refused here).
-  in.rtol = r.number("rtol", 1e-5, Range::closed(1e-12, 1e-2));
-  in.atol = r.number("atol", 1e-3, Range::closed(1e-10, 10.0), "K");
-  in.max_steps = r.integer("max_steps", 50000, 10, 100000000);
-  in.max_order = static_cast<int>(r.integer("max_order", 5, 1, 5));
-  in.linear_solver = r.choice("linear_solver", "band", {"band", "klu"}) == "klu" ? th::LinearSolver::klu
+  in.rtol = r.number("rtol", 1e-5, Range::closed(1e-12, 1e-2), "", "CVODE relative tolerance of the steady march");
+  in.atol = r.number("atol", 1e-3, Range::closed(1e-10, 10.0), "K", "CVODE absolute tolerance");
+  in.max_steps = r.integer("max_steps", 50000, 10, 100000000, "most CVODE steps per solve");
+  in.max_order = static_cast<int>(r.integer("max_order", 5, 1, 5, "highest BDF order"));
+  in.linear_solver = r.choice("linear_solver", "band", {"band", "klu"}, "linear solver of the Newton iterations") == "klu" ? th::LinearSolver::klu
                                                                                  : th::LinearSolver::band;
-  c.steady.tolerance = r.number("steady_tolerance", 1e-10, Range::closed(1e-14, 1e-2));
-  c.steady.newton_first = r.boolean("newton_first", true);
-  c.steady.max_time_factor = r.number("max_time_scales", 1e4, Range::closed(1.0, 1e9));
-  c.steady.max_wall_seconds = r.number("max_wall_time", 600.0, Range::closed(1.0, 1e7), "s");
+  c.steady.tolerance = r.number("steady_tolerance", 1e-10, Range::closed(1e-14, 1e-2), "",
+                                "scaled residual at which the film counts as steady (docs/thermal_model.md)");
+  c.steady.newton_first = r.boolean("newton_first", true, "try damped Newton from the start before marching");
+  c.steady.max_time_factor = r.number("max_time_scales", 1e4, Range::closed(1.0, 1e9), "",
+                                     "give up marching after this many system time scales");
+  c.steady.max_wall_seconds = r.number("max_wall_time", 600.0, Range::closed(1.0, 1e7), "s",
+                                      "wall-time budget of the steady solve (docs/reliability.md)");
   c.transient_settings.integrator = in;
-  c.transient_settings.integrator.rtol = r.number("transient_rtol", 1e-6, Range::closed(1e-12, 1e-2));
+  c.transient_settings.integrator.rtol =
+      r.number("transient_rtol", 1e-6, Range::closed(1e-12, 1e-2), "", "CVODE relative tolerance of the transient");
   r.finish();
 }
 }  // namespace
 
 void read_thermal_sections(MapReader& root, const std::string& case_dir, ThermalCase& c, bool film_from_dem) {
-  MapReader t = root.child("thermal");
+  MapReader t = root.child("thermal", "the film energy equation (docs/thermal_model.md)");
   th::FilmModel& m = c.model;
-  m.material = read_material(t.child("material"));
+  m.material = read_material(t.child("material", "the particles' thermal properties"));
   if (film_from_dem && !root.has("film"))
     c.film_source = "dem";
   else
-    read_film(root.child("film"), case_dir, m.material.d, c);
+    read_film(root.child("film", "the film the thermal model heats: analytic or from a file (coupled cases: from the DEM)"),
+              case_dir, m.material.d, c);
 
-  const std::string model = t.choice("model", "2d", {"2d", "1d"});
+  const std::string model = t.choice("model", "2d", {"2d", "1d"},
+                                     "2D film (z and depth) or 1D depth-lumped (quick estimate)");
   c.grid.lumped = model == "1d";
-  MapReader g = t.child("grid");
-  c.grid.nz = static_cast<int>(g.integer("nz", 200, 2, 100000));
-  if (!c.grid.lumped) c.grid.nxi = static_cast<int>(g.integer("nxi", 40, 2, 2000));
+  MapReader g = t.child("grid", "the finite-volume grid");
+  c.grid.nz = static_cast<int>(g.integer("nz", 200, 2, 100000, "cells along the drum"));
+  if (!c.grid.lumped) c.grid.nxi = static_cast<int>(g.integer("nxi", 40, 2, 2000, "cells across the film depth (2d)"));
   // The band Jacobian holds about 3 nxi + 1 entries per cell: refuse a grid it cannot hold.
   const double cells = static_cast<double>(c.grid.nz) * (c.grid.lumped ? 1 : c.grid.nxi);
   const double bytes = cells * (3.0 * (c.grid.lumped ? 1 : c.grid.nxi) + 1.0) * 8.0;
@@ -183,52 +208,62 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                                              " cells needs about " + std::to_string(static_cast<long long>(bytes / 1e9)) +
                                              " GB for its band Jacobian (at most 4): use fewer cells");
   g.finish();
-  c.grid.advection = t.choice("advection", "upwind", {"upwind", "van_leer"}) == "upwind" ? th::Advection::upwind
+  c.grid.advection = t.choice("advection", "upwind", {"upwind", "van_leer"}, "advection scheme along z") == "upwind" ? th::Advection::upwind
                                                                                          : th::Advection::van_leer;
-  m.T_in = t.number("T_in", 873.15, kTemperature, "K");
-  read_conductivity(t.child("conductivity"), m);
-  MapReader hc = t.child("heat_capacity");
-  if (hc.choice("model", "bauxite", {"bauxite", "constant"}) == "constant")
-    m.heat.cp_constant = hc.required_number("cp", Range::positive(), "J/(kg K)");
+  m.T_in = t.number("T_in", 873.15, kTemperature, "K", "particle inlet temperature");
+  read_conductivity(t.child("conductivity", "effective conductivity of the film"), m);
+  MapReader hc = t.child("heat_capacity", "the particles' specific heat");
+  if (hc.choice("model", "bauxite", {"bauxite", "constant"}, "c_p(T) of sintered bauxite, or a constant") == "constant")
+    m.heat.cp_constant = hc.required_number("cp", Range::positive(), "J/(kg K)", "the constant specific heat");
   hc.finish();
-  read_flux(t.child("flux"), case_dir, m);
-  MapReader rad = t.child("radiation");
+  read_flux(t.child("flux", "the concentrated solar flux"), case_dir, m);
+  MapReader rad = t.child("radiation", "radiation exchange of the film (docs/cavity_model.md)");
   th::CavitySettings& cav = m.cavity;
-  cav.enabled = rad.choice("model", "cavity", {"cavity", "open_surface"}) == "cavity";
+  cav.enabled = rad.choice("model", "cavity", {"cavity", "open_surface"},
+                           "the drum interior as a grey enclosure, or an open surface with a loss factor") == "cavity";
   if (cav.enabled) {
-    cav.aperture_diameter = rad.number("aperture_diameter", 0.0, Range::closed(0.0, 100.0), "m (0 = drum diameter)");
-    cav.rings = static_cast<int>(rad.integer("rings", 25, 1, 2000));
-    cav.wall_absorptance = rad.number("wall_absorptance", cav.wall_absorptance, Range::open_closed(0.0, 1.0));
-    cav.wall_emissivity = rad.number("wall_emissivity", cav.wall_emissivity, Range::open_closed(0.0, 1.0));
-    cav.convection_correlation = rad.choice("convection", "correlation", {"correlation", "h_conv"}) == "correlation";
-    cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg") * 3.14159265358979323846 / 180.0;
+    cav.aperture_diameter = rad.number("aperture_diameter", 0.0, Range::closed(0.0, 100.0), "m (0 = drum diameter)",
+                                       "diameter of the aperture at z = L (cavity model)");
+    cav.rings = static_cast<int>(rad.integer("rings", 25, 1, 2000, "axial film rings of the enclosure (cavity model)"));
+    cav.wall_absorptance = rad.number("wall_absorptance", cav.wall_absorptance, Range::open_closed(0.0, 1.0), "",
+                                      "solar absorptance of the back plate and front annulus (cavity model)");
+    cav.wall_emissivity = rad.number("wall_emissivity", cav.wall_emissivity, Range::open_closed(0.0, 1.0), "",
+                                     "thermal emissivity of the back plate and front annulus (cavity model)");
+    cav.convection_correlation = rad.choice("convection", "correlation", {"correlation", "h_conv"},
+                                            "convection coefficient from the cavity correlation, or surface.h_conv (cavity model)") ==
+                                 "correlation";
+    cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg", "receiver tilt for the convection correlation (cavity model)") *
+                   3.14159265358979323846 / 180.0;
   }
   if (cav.enabled && c.film_source != "dem" && cav.aperture_diameter > c.film.drum_diameter * (1 + 1e-9))
     rad.fail("aperture_diameter", "exceeds the drum diameter " + std::to_string(c.film.drum_diameter) + " m of the film");
   rad.finish();
-  MapReader s = t.child("surface");
+  MapReader s = t.child("surface", "the film surface's surroundings");
   if (cav.enabled && s.has("loss_factor"))
     s.fail("loss_factor", "applies to the open-surface model only (thermal.radiation.model: open_surface); the "
                           "cavity model computes what the cavity returns");
-  m.surface.loss_factor = cav.enabled ? 1.0 : s.number("loss_factor", 1.0, Range::closed(0.0, 1.0));
-  m.surface.T_env = s.number("T_env", 300.0, kTemperature, "K");
-  m.surface.h_conv = s.number("h_conv", 10.0, Range::closed(0.0, 1e4), "W/(m2 K)");
-  m.surface.T_air = s.number("T_air", 300.0, kTemperature, "K");
+  m.surface.loss_factor = cav.enabled ? 1.0
+                                      : s.number("loss_factor", 1.0, Range::closed(0.0, 1.0), "",
+                                                 "share of the emitted radiation that is lost (open surface)");
+  m.surface.T_env = s.number("T_env", 300.0, kTemperature, "K", "radiative environment seen through the aperture");
+  m.surface.h_conv = s.number("h_conv", 10.0, Range::closed(0.0, 1e4), "W/(m2 K)",
+                              "convection coefficient (open surface, or cavity with convection: h_conv)");
+  m.surface.T_air = s.number("T_air", 300.0, kTemperature, "K", "ambient air temperature");
   s.finish();
-  MapReader w = t.child("wall");
-  m.wall.adiabatic = w.boolean("adiabatic", false);
+  MapReader w = t.child("wall", "heat loss through the drum wall");
+  m.wall.adiabatic = w.boolean("adiabatic", false, "no heat loss through the wall");
   if (!m.wall.adiabatic) {
-    m.wall.U_w = w.number("U_w", 1.0, Range::open_closed(0.0, 1e5), "W/(m2 K)");
-    m.wall.T_amb = w.number("T_amb", 300.0, kTemperature, "K");
+    m.wall.U_w = w.number("U_w", 1.0, Range::open_closed(0.0, 1e5), "W/(m2 K)", "overall wall heat-transfer coefficient (unless adiabatic)");
+    m.wall.T_amb = w.number("T_amb", 300.0, kTemperature, "K", "ambient temperature outside the wall (unless adiabatic)");
   }
   w.finish();
-  read_solver(t.child("solver"), c);
+  read_solver(t.child("solver", "the CVODE integrator and the steady-state search"), c);
   if (t.has("transient")) {
-    MapReader tr = t.child("transient");
+    MapReader tr = t.child("transient", "a transient run after the steady state (with flux or flow histories)");
     c.transient = true;
-    c.transient_settings.t_end = tr.required_number("t_end", Range::open_closed(0.0, 1e7), "s");
-    c.transient_settings.n_outputs = static_cast<int>(tr.integer("n_outputs", 121, 2, 100000));
-    m.flow_time = read_time_factor(tr.child("mass_flow"));
+    c.transient_settings.t_end = tr.required_number("t_end", Range::open_closed(0.0, 1e7), "s", "simulated time of the transient");
+    c.transient_settings.n_outputs = static_cast<int>(tr.integer("n_outputs", 121, 2, 100000, "output times, evenly spaced"));
+    m.flow_time = read_time_factor(tr.child("mass_flow", "a time history multiplying the mass flow"));
     tr.finish();
   } else if (m.flux_time.kind != th::TimeFactor::Kind::constant) {
     t.fail("flux", "has a time history (flux.time) but the case has no thermal.transient section to run it");
@@ -269,7 +304,7 @@ ThermalCase read_thermal_case(const std::string& path) {
   MapReader root = MapReader::from_file(path);
   ThermalCase c;
   c.path = path;
-  c.title = root.string("title", "");
+  c.title = root.string("title", "", "a one-line name of the case, echoed into the outputs");
   read_thermal_sections(root, case_directory(path), c);
   root.finish();
   c.resolved_yaml = root.resolved_text();

@@ -247,7 +247,18 @@ double MapReader::to_number(const std::string& key, const YAML::Node& n) const {
   return v;
 }
 
-double MapReader::number(const std::string& key, double default_value, Range range, const std::string& unit) {
+void MapReader::note(const std::string& key, const std::string& type, const std::string& default_value,
+                     const std::string& allowed, const std::string& unit, const std::string& meaning) const {
+  if (!shared_->recorder) return;
+  const std::string p = key_path(key);
+  for (const auto& k : *shared_->recorder)
+    if (k.path == p) return;
+  shared_->recorder->push_back({p, type, default_value, allowed, unit, meaning});
+}
+
+double MapReader::number(const std::string& key, double default_value, Range range, const std::string& unit,
+                         const std::string& meaning) {
+  note(key, "number", fmt(default_value), range.describe(), unit, meaning);
   const auto on = get(key);
   const YAML::Node n = on ? *on : YAML::Node();
   double v = on ? to_number(key, n) : default_value;
@@ -259,12 +270,16 @@ double MapReader::number(const std::string& key, double default_value, Range ran
   return v;
 }
 
-double MapReader::required_number(const std::string& key, Range range, const std::string& unit) {
+double MapReader::required_number(const std::string& key, Range range, const std::string& unit,
+                                  const std::string& meaning) {
+  note(key, "number", "required", range.describe(), unit, meaning);
   if (!has(key)) fail(key, "is required" + (unit.empty() ? std::string() : " (unit " + unit + ")"));
   return number(key, 0.0, range, unit);
 }
 
-long MapReader::integer(const std::string& key, long default_value, long lo, long hi) {
+long MapReader::integer(const std::string& key, long default_value, long lo, long hi, const std::string& meaning) {
+  note(key, "integer", std::to_string(default_value), "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]", "",
+       meaning);
   const auto on = get(key);
   const YAML::Node n = on ? *on : YAML::Node();
   long v = default_value;
@@ -285,7 +300,8 @@ long MapReader::integer(const std::string& key, long default_value, long lo, lon
   return v;
 }
 
-bool MapReader::boolean(const std::string& key, bool default_value) {
+bool MapReader::boolean(const std::string& key, bool default_value, const std::string& meaning) {
+  note(key, "boolean", default_value ? "true" : "false", "true, false", "", meaning);
   const auto on = get(key);
   const YAML::Node n = on ? *on : YAML::Node();
   bool v = default_value;
@@ -299,7 +315,8 @@ bool MapReader::boolean(const std::string& key, bool default_value) {
   return v;
 }
 
-std::string MapReader::string(const std::string& key, const std::string& default_value) {
+std::string MapReader::string(const std::string& key, const std::string& default_value, const std::string& meaning) {
+  note(key, "text", default_value.empty() ? "\"\"" : default_value, "", "", meaning);
   const auto on = get(key);
   const YAML::Node n = on ? *on : YAML::Node();
   if (on && !n.IsScalar()) throw ConfigError(where(n) + ": " + key_path(key) + ": expected a string");
@@ -309,7 +326,10 @@ std::string MapReader::string(const std::string& key, const std::string& default
 }
 
 std::string MapReader::choice(const std::string& key, const std::string& default_value,
-                              const std::vector<std::string>& allowed) {
+                              const std::vector<std::string>& allowed, const std::string& meaning) {
+  std::string words;
+  for (const auto& a : allowed) words += (words.empty() ? "" : ", ") + a;
+  note(key, "choice", default_value, words, "", meaning);
   const auto on = get(key);
   const YAML::Node n = on ? *on : YAML::Node();
   if (on && !n.IsScalar()) throw ConfigError(where(n) + ": " + key_path(key) + ": expected one word");
@@ -325,7 +345,10 @@ std::string MapReader::choice(const std::string& key, const std::string& default
 }
 
 std::vector<double> MapReader::numbers(const std::string& key, const std::vector<double>& default_value,
-                                       Range range, const std::string& unit) {
+                                       Range range, const std::string& unit, const std::string& meaning) {
+  std::string listed;
+  for (double x : default_value) listed += (listed.empty() ? "" : ", ") + fmt(x);
+  note(key, "list of numbers", "[" + listed + "]", "each in " + range.describe(), unit, meaning);
   const auto on = get(key);
   const YAML::Node n = on ? *on : YAML::Node();
   std::vector<double> v = default_value;
@@ -348,7 +371,9 @@ std::vector<double> MapReader::numbers(const std::string& key, const std::vector
 }
 
 std::array<double, 3> MapReader::vec3(const std::string& key, const std::array<double, 3>& default_value,
-                                      const std::string& unit) {
+                                      const std::string& unit, const std::string& meaning) {
+  note(key, "3-vector", "[" + fmt(default_value[0]) + ", " + fmt(default_value[1]) + ", " + fmt(default_value[2]) + "]",
+       "", unit, meaning);
   std::vector<double> d(default_value.begin(), default_value.end());
   const YAML::Node& self = node_;
   YAML::Node n = self.IsMap() ? self[key] : YAML::Node();
@@ -359,7 +384,8 @@ std::array<double, 3> MapReader::vec3(const std::string& key, const std::array<d
   return {v[0], v[1], v[2]};
 }
 
-MapReader MapReader::child(const std::string& key) {
+MapReader MapReader::child(const std::string& key, const std::string& meaning) {
+  note(key, "section", "", "", "", meaning);
   const auto on = get(key);
   const YAML::Node n = on ? *on : YAML::Node();
   if (on && !n.IsMap()) throw ConfigError(where(n) + ": " + key_path(key) + ": expected a mapping (key: value)");
@@ -371,7 +397,8 @@ MapReader MapReader::child(const std::string& key) {
   return MapReader(on ? n : YAML::Node(YAML::NodeType::Map), key_path(key), shared_, r);
 }
 
-std::vector<MapReader> MapReader::children(const std::string& key) {
+std::vector<MapReader> MapReader::children(const std::string& key, const std::string& meaning) {
+  note(key, "list of sections", "[]", "", "", meaning);
   const auto on = get(key);
   const YAML::Node n = on ? *on : YAML::Node();
   std::vector<MapReader> out;

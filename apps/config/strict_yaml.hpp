@@ -37,7 +37,21 @@ struct Range {
   std::string describe() const;
 };
 
+// One key as a reader declares it. A reader that records (MapReader::record_keys) notes
+// every key it is asked for, read or defaulted: the case-key reference docs/case_keys.md is
+// made from these records, so it comes from the readers themselves (apps/config/case_keys.cpp).
+struct KeyRecord {
+  std::string path;           // dotted key path, e.g. dem.drum.diameter
+  std::string type;           // number, integer, boolean, text, choice, list of numbers, 3-vector, section
+  std::string default_value;  // as the resolved configuration writes it; "required" when there is none
+  std::string allowed;        // range or choices
+  std::string unit;           // as the reader states it ("" = dimensionless or none)
+  std::string meaning;        // one line, given at the reader
+};
+
 // Reader for one YAML mapping. Children share the file name and the resolved tree.
+// Every typed read takes a last argument `meaning`: one line on what the key does, which
+// the key reference prints (readers of case files give it for every key).
 class MapReader {
  public:
   // Parses `path` as a YAML file; the root must be a mapping.
@@ -47,22 +61,28 @@ class MapReader {
 
   bool has(const std::string& key) const;
 
-  double number(const std::string& key, double default_value, Range range, const std::string& unit = "");
-  double required_number(const std::string& key, Range range, const std::string& unit = "");
-  long integer(const std::string& key, long default_value, long lo, long hi);
-  bool boolean(const std::string& key, bool default_value);
-  std::string string(const std::string& key, const std::string& default_value);
+  double number(const std::string& key, double default_value, Range range, const std::string& unit = "",
+                const std::string& meaning = "");
+  double required_number(const std::string& key, Range range, const std::string& unit = "",
+                         const std::string& meaning = "");
+  long integer(const std::string& key, long default_value, long lo, long hi, const std::string& meaning = "");
+  bool boolean(const std::string& key, bool default_value, const std::string& meaning = "");
+  std::string string(const std::string& key, const std::string& default_value, const std::string& meaning = "");
   std::string choice(const std::string& key, const std::string& default_value,
-                     const std::vector<std::string>& allowed);
+                     const std::vector<std::string>& allowed, const std::string& meaning = "");
   std::array<double, 3> vec3(const std::string& key, const std::array<double, 3>& default_value,
-                             const std::string& unit = "");
+                             const std::string& unit = "", const std::string& meaning = "");
   std::vector<double> numbers(const std::string& key, const std::vector<double>& default_value,
-                              Range range, const std::string& unit = "");
+                              Range range, const std::string& unit = "", const std::string& meaning = "");
 
   // Child mapping; if absent, an empty mapping (so its defaults apply and are recorded).
-  MapReader child(const std::string& key);
+  MapReader child(const std::string& key, const std::string& meaning = "");
   // A sequence of mappings under key (empty if absent).
-  std::vector<MapReader> children(const std::string& key);
+  std::vector<MapReader> children(const std::string& key, const std::string& meaning = "");
+
+  // From now on this reader and every reader sharing its file append a KeyRecord to `into`
+  // for each key they are asked for (the first time per key path); `into` must outlive them.
+  void record_keys(std::vector<KeyRecord>* into) { shared_->recorder = into; }
 
   // Declares every key this mapping may hold (read or not, e.g. optional sections) and
   // refuses at once any other key, with the closest known key as a suggestion. finish()
@@ -90,6 +110,7 @@ class MapReader {
   struct Shared {
     std::string source;
     YAML::Node resolved;
+    std::vector<KeyRecord>* recorder = nullptr;  // record_keys()
   };
   MapReader(YAML::Node node, std::string path, std::shared_ptr<Shared> shared, YAML::Node resolved_here);
   std::string key_path(const std::string& key) const;
@@ -97,6 +118,8 @@ class MapReader {
   std::optional<YAML::Node> get(const std::string& key);
   double to_number(const std::string& key, const YAML::Node& n) const;
   void check_keys(const std::vector<std::string>& allowed) const;
+  void note(const std::string& key, const std::string& type, const std::string& default_value,
+            const std::string& allowed, const std::string& unit, const std::string& meaning) const;
 
   YAML::Node node_;
   std::string path_;

@@ -85,6 +85,7 @@ class Reader {
     sum_.mix(obj + "@" + name);
     sum_.mix(&value, sizeof value);
   }
+  bool has(const std::string& obj, const std::string& name) const { return f_.has_attribute(obj, name); }
   static constexpr bool reading = true;
   Checksum sum_;
 
@@ -253,6 +254,12 @@ void visit(IO& io, RunCheckpoint& c) {
   io.text("/", "resolved_config", c.resolved_yaml);
   io.text("/", "phase", c.phase);
   integer(io, "/", "sampled_turns", c.sampled_turns);
+  // A checkpoint written only at the end of turns (an older file) has no turn_snapshots: 0.
+  if constexpr (IO::reading) {
+    if (io.has("/", "turn_snapshots")) integer(io, "/", "turn_snapshots", c.turn_snapshots);
+  } else {
+    integer(io, "/", "turn_snapshots", c.turn_snapshots);
+  }
   io.number("/", "particle_steps", c.particle_steps);
   io.number("/", "wall_time_s", c.wall_time);
   visit_scene(io, c.scene);

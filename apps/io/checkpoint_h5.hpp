@@ -22,6 +22,7 @@ struct RunCheckpoint {
   std::string resolved_yaml;  // the case the run uses; --resume reads it from here
   std::string phase;          // "spin-up", "sampling" or "done"
   int sampled_turns = 0;      // turns sampled so far (phase "sampling"/"done")
+  int turn_snapshots = 0;     // snapshots taken into the next, unfinished turn (phase "sampling")
   double particle_steps = 0.0;
   double wall_time = 0.0;     // s of wall time spent so far
   dem::scene::SceneState scene;

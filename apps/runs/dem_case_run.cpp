@@ -84,12 +84,15 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   };
 
   // Checkpoints. The run rebuilds the neighbour lists at fixed points (after every spin-up
-  // chunk and every sampled turn) and checkpoints only there, so whether and when a
+  // chunk and every sampled snapshot) and checkpoints only there, so whether and when a
   // checkpoint is written (wall clock) never changes the result, and a resumed run
-  // continues bitwise (Simulation::rebuild_lists).
+  // continues bitwise (Simulation::rebuild_lists). A checkpoint inside a sampled turn keeps
+  // the samplers' partial turn, so a stop loses at most one snapshot interval of simulated
+  // time beyond checkpoint_interval (docs/reliability.md).
   dem::scene::SceneSampler sampler(scene, dc.sampling.sampler);
   std::vector<io::NamedSnapshot> snapshots;
   int sampled = ck ? ck->sampled_turns : 0;
+  int in_turn = ck ? ck->turn_snapshots : 0;  // snapshots taken into the unfinished turn
   auto checkpoint_at = std::chrono::steady_clock::now();
   auto checkpoint = [&](const std::string& phase, bool force) {
     const auto now = std::chrono::steady_clock::now();
@@ -101,6 +104,7 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     c.resolved_yaml = cf.resolved_yaml;
     c.phase = phase;
     c.sampled_turns = sampled;
+    c.turn_snapshots = in_turn;
     c.particle_steps = steps_before + particle_steps;
     c.wall_time = wall_before + progress.elapsed();
     c.scene = scene.export_state();
@@ -168,16 +172,22 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   const int turns = static_cast<int>(std::floor(dc.sampling.turns + 1e-9));
   const int per_turn = sampler.spec().snapshots_per_turn;
   const int stride = io::snapshot_stride(turns * per_turn, static_cast<double>(sim.size()));
-  int taken = sampled * per_turn;  // sampled snapshots so far, counted from the start of sampling
-  // One turn as SceneSampler::sample_turns does it, keeping every stride-th snapshot.
+  int taken = sampled * per_turn + in_turn;  // sampled snapshots so far, counted from the start of sampling
+  // One turn as SceneSampler::sample_turns does it (from the snapshot a resumed run stopped
+  // at), keeping every stride-th snapshot; between snapshots, a fixed point as in the spin-up.
   auto sample_turn = [&] {
-    for (int k = 0; k < per_turn; ++k) {
+    for (; in_turn < per_turn;) {
       advance([&] { scene.advance(period / per_turn); });
       dem::scene::SnapshotArrays s = dem::scene::take_snapshot(sim);
       if (++taken % stride == 0) keep(s, true);
       sampler.add_snapshot(std::move(s));
+      if (++in_turn == per_turn) break;  // the turn's end is the fixed point below
+      sim.rebuild_lists();
+      checkpoint("sampling", false);
+      stop_if_interrupted("sampling");
     }
     sampler.end_turn();
+    in_turn = 0;
   };
   if (sampled < turns)
     progress.phase("sampling", std::to_string(turns) + " turn(s) of " + std::to_string(per_turn) +

@@ -2,6 +2,7 @@
 // Runs the real `centrec` binary in a child process with a wall-clock limit, so a crash
 // (a signal) or a hang (the limit) is observed rather than taken down with the test.
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,8 +24,11 @@ struct BinaryRun {
   std::string out, err;
 };
 
-// Starts `centrec args...`; with `interrupt_after` > 0 s sends it SIGINT then (once).
-inline BinaryRun run_binary(const std::vector<std::string>& args, double limit_s = 30.0, double interrupt_after = 0.0) {
+// Starts `centrec args...`; with `interrupt_after` > 0 s sends it SIGINT then (once); with
+// `address_space` > 0 bytes the child runs under that limit (ulimit -v), so an allocation
+// beyond it fails as it would on a machine without the memory.
+inline BinaryRun run_binary(const std::vector<std::string>& args, double limit_s = 30.0, double interrupt_after = 0.0,
+                            std::size_t address_space = 0) {
   const auto dir = std::filesystem::temp_directory_path();
   const std::string tag = std::to_string(::getpid());
   const std::string out_path = (dir / ("centrec_out_" + tag)).string(), err_path = (dir / ("centrec_err_" + tag)).string();
@@ -34,6 +38,10 @@ inline BinaryRun run_binary(const std::vector<std::string>& args, double limit_s
     const int e = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(o, 1);
     ::dup2(e, 2);
+    if (address_space > 0) {
+      const rlimit lim{static_cast<rlim_t>(address_space), static_cast<rlim_t>(address_space)};
+      ::setrlimit(RLIMIT_AS, &lim);
+    }
     std::vector<char*> argv{const_cast<char*>(CENTREC_BINARY)};
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);

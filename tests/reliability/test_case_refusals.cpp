@@ -185,3 +185,21 @@ TEST(CaseRefusals, ThermalSetUpChecksAreMadeByTheReader) {
   EXPECT_HAS(error_of(with(cavity, "grid: {nz: 200, nxi: 40}", "grid: {nz: 100000, nxi: 2000}")),
              "GB for its band Jacobian");
 }
+
+TEST(CaseRefusals, EverySweepPointIsCheckedAsItsRunWouldBe) {
+  // Each sweep point is a `centrec run` with --speed-rpm and --mass-flow: the reader makes
+  // that run's checks (config::dem_run_problem) on every point, naming the swept value.
+  const std::string sweep = std::string(kDem) + "sweep: {speed_rpm: [320.16], mass_flow: [8.925e-3, MDOT]}\n";
+  EXPECT_EQ(error_of(with(sweep, "MDOT", "4e-3")), "");
+  const std::string tiny = error_of(with(sweep, "MDOT", "1e-300"));
+  EXPECT_HAS(tiny, "sweep.mass_flow");
+  EXPECT_HAS(tiny, "1e-300 kg/s");
+  EXPECT_HAS(tiny, "less than one particle");
+  EXPECT_HAS(error_of(with(sweep, "MDOT", "1e4")), "exceeds what the feeder region can insert");
+  const std::string slow = error_of(with(with(sweep, "MDOT", "4e-3"), "speed_rpm: [320.16]", "speed_rpm: [1e-300]"));
+  EXPECT_HAS(slow, "sweep.speed_rpm");
+  EXPECT_HAS(slow, "cannot finish");
+  // The same feed is refused in the DEM section itself, and by `run --mass-flow`.
+  EXPECT_HAS(error_of(with(kDem, "mass_flow: 8.925e-3", "mass_flow: 1e-300")),
+             "dem.feeder.mass_flow: the feed 1e-300 kg/s delivers less than one particle");
+}

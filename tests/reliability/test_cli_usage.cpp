@@ -120,3 +120,28 @@ TEST(CliUsage, AFeedTheFeederCannotDeliverIsWarned) {
   EXPECT_NE(r.err.find("of the 300 g/s asked"), std::string::npos) << r.err;
   std::filesystem::remove_all(dir);
 }
+
+TEST(CliUsage, RunningOutOfMemoryIsAnErrorNotACrash) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit allows";
+#endif
+  // 1e8 particles fit this 1 m drum and pass every check, but need tens of GB; under a
+  // 1 GB address-space limit (ulimit -v) the allocation fails. The run must end with one
+  // clear line and exit 1: no std::bad_alloc text, no abort, no signal.
+  const std::string dir = temp_dir("cli_memory");
+  std::ofstream(dir + "/case.yaml") << "dem:\n  drum: {diameter: 1.0, length: 1.0, speed_rpm: 60}\n"
+                                       "  initial_film: {particles: 100000000}\n"
+                                       "  run: {duration: 0.01, threads: 1, checkpoint_interval: 0}\n";
+  const BinaryRun v = run_binary({"validate", dir + "/case.yaml"}, 60.0);
+  ASSERT_EQ(v.exit_code, 0) << "the case must pass the readers: " << v.err;
+  const BinaryRun r = run_binary({"dem", dir + "/case.yaml", "--out", dir + "/out", "--no-plots"}, 120.0, 0.0, 1ull << 30);
+  std::printf("stderr under a 1 GB limit:\n%s\n", r.err.c_str());
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_EQ(r.signal, 0) << r.err;
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("centrec dem: error: out of memory"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("bad_alloc"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("terminate called"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out")) << "the output folder the failed run created is left behind";
+  std::filesystem::remove_all(dir);
+}

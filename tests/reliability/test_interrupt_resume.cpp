@@ -2,8 +2,16 @@
 // moment (fixed seed) writes a checkpoint at its next safe point, says how to resume and
 // exits with 128 + 2; `centrec dem --resume` then ends bitwise identical to the run left
 // alone, with the first run's --duration (kept in the checkpoint) and a summary.json that
-// reports it.
+// reports it. A SIGKILL inside a sampled turn loses at most one snapshot interval: the
+// run checkpoints between the turn's snapshots, and resumes from there bitwise.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
 
 #include <cstring>
 #include <filesystem>
@@ -12,6 +20,7 @@
 #include <random>
 #include <string>
 
+#include "io/checkpoint_h5.hpp"
 #include "io/h5_file.hpp"
 #include "tests/reliability/run_binary.hpp"
 #include "tests/scene/resume_case.hpp"
@@ -33,6 +42,29 @@ std::string interrupt_case() {
 
 std::vector<double> dataset(const std::string& dir, const std::string& path) {
   return centrec::io::H5File::open_read(dir + "/dem.h5").read(path);
+}
+
+// The datasets `paths` of a/dem.h5 and b/dem.h5 compared value by value, bitwise (NaN, an
+// empty bin, in both is skipped). Returns how many values are equal; 0 after a difference,
+// which fails the test naming it.
+std::size_t bitwise_equal_values(const std::string& a, const std::string& b, const std::vector<const char*>& paths) {
+  std::size_t equal = 0;
+  for (const char* p : paths) {
+    const auto x = dataset(a, p), y = dataset(b, p);
+    if (x.size() != y.size()) {
+      ADD_FAILURE() << p << ": " << x.size() << " values vs " << y.size();
+      return 0;
+    }
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (x[i] != x[i] && y[i] != y[i]) continue;
+      if (std::memcmp(&x[i], &y[i], sizeof(double)) != 0) {
+        ADD_FAILURE() << p << "[" << i << "]: " << x[i] << " vs " << y[i];
+        return 0;
+      }
+      ++equal;
+    }
+  }
+  return equal;
 }
 
 std::string slurp(const std::string& path) {
@@ -69,17 +101,9 @@ TEST(InterruptResume, SigintCheckpointsAndTheResumedRunEqualsTheWholeOne) {
   const BinaryRun r = run_binary({"dem", "--resume", stopped}, 300.0);
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
-  std::size_t compared = 0;
-  for (const char* p : {"/mass_flow/time", "/mass_flow/fed", "/mass_flow/out", "/mass_flow/holdup",
-                        "/film/thickness_mean", "/film/axial_velocity_mean", "/film/solid_fraction_mean"}) {
-    const auto a = dataset(whole, p), b = dataset(stopped, p);
-    ASSERT_EQ(a.size(), b.size()) << p;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      if (a[i] != a[i] && b[i] != b[i]) continue;  // NaN: an empty bin in both
-      ASSERT_EQ(std::memcmp(&a[i], &b[i], sizeof(double)), 0) << p << "[" << i << "]";
-      ++compared;
-    }
-  }
+  const std::size_t compared =
+      bitwise_equal_values(whole, stopped, {"/mass_flow/time", "/mass_flow/fed", "/mass_flow/out", "/mass_flow/holdup",
+                                            "/film/thickness_mean", "/film/axial_velocity_mean", "/film/solid_fraction_mean"});
   EXPECT_GT(compared, 100u);
   // summary.json reports what ran: the --duration of the first command.
   const std::string summary = slurp(stopped + "/summary.json");
@@ -88,6 +112,63 @@ TEST(InterruptResume, SigintCheckpointsAndTheResumedRunEqualsTheWholeOne) {
   const double t_end = dataset(stopped, "/mass_flow/time").back();
   EXPECT_LT(t_end, 0.5);  // 0.06 s + 2 turns of 0.187 s, not 5 s
   std::printf("%zu values bitwise equal; the resumed run ended at t = %.4f s\n", compared, t_end);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(InterruptResume, SigkillInsideASampledTurnResumesFromThatTurnBitwise) {
+  // One long sampled turn of 8 snapshots, a checkpoint at every safe point.
+  std::string text = centrec::testing::kResumeCase;
+  const std::string two_turns = "turns: 2, snapshots_per_turn: 4";
+  text.replace(text.find(two_turns), two_turns.size(), "turns: 1, snapshots_per_turn: 8");
+  const std::string dir = centrec::testing::fresh_dir("interrupt_turn");
+  const std::string case_path = centrec::testing::write_case(dir, text);
+  const std::string whole = dir + "/whole", killed = dir + "/killed";
+  const BinaryRun w = run_binary({"dem", case_path, "--out", whole, "--no-plots"}, 300.0);
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+
+  // SIGKILL once a checkpoint inside the turn exists (after its 3rd snapshot).
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    ::execl(CENTREC_BINARY, CENTREC_BINARY, "dem", case_path.c_str(), "--out", killed.c_str(), "--no-plots",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  bool inside = false;
+  for (int k = 0; k < 60000 && !inside; ++k) {
+    if (::waitpid(child, &status, WNOHANG) == child) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    try {
+      const auto ck = centrec::io::read_checkpoint(killed);
+      inside = ck.phase == "sampling" && ck.turn_snapshots >= 3;
+    } catch (const std::exception&) {
+    }
+  }
+  ::kill(child, SIGKILL);
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(inside) << "no checkpoint inside the sampled turn before the run ended";
+  ASSERT_TRUE(WIFSIGNALED(status));
+  const auto ck = centrec::io::read_checkpoint(killed);
+  const double period = 60.0 / 320.16, t_turn_end = dataset(whole, "/mass_flow/time").back();
+  const double t_ck = ck.scene.engine.time;
+  std::printf("killed with a checkpoint at t = %.5f s, %d of 8 snapshots into the turn (turn ends at %.5f s)\n", t_ck,
+              ck.turn_snapshots, t_turn_end);
+  EXPECT_EQ(ck.sampled_turns, 0);
+  EXPECT_GE(ck.turn_snapshots, 3);
+  EXPECT_LT(t_ck, t_turn_end - 0.5 * period / 8);  // the only turn ends the run
+
+  const BinaryRun r = run_binary({"dem", "--resume", killed, "--no-plots"}, 300.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("(sampling)"), std::string::npos) << r.err;
+  const std::size_t compared =
+      bitwise_equal_values(whole, killed, {"/mass_flow/time", "/mass_flow/fed", "/mass_flow/out", "/mass_flow/holdup",
+                                           "/film/thickness_mean", "/film/axial_velocity_mean",
+                                           "/film/solid_fraction_mean", "/film/dispersion"});
+  EXPECT_GT(compared, 100u);
+  std::printf("%zu values bitwise equal to the run left alone\n", compared);
   std::filesystem::remove_all(dir);
 }
 
@@ -123,16 +204,8 @@ TEST(InterruptResume, SigintDuringTheDemOfARunAndTheSameCommandAgainEqualsTheWho
   const std::string a = cache_entry(dir + "/cache_whole"), b = cache_entry(dir + "/cache");
   ASSERT_FALSE(a.empty());
   ASSERT_FALSE(b.empty());
-  std::size_t compared = 0;
-  for (const char* p : {"/mass_flow/time", "/mass_flow/out", "/film/thickness_mean", "/film/axial_velocity_mean"}) {
-    const auto x = dataset(a, p), y = dataset(b, p);
-    ASSERT_EQ(x.size(), y.size()) << p;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      if (x[i] != x[i] && y[i] != y[i]) continue;
-      ASSERT_EQ(std::memcmp(&x[i], &y[i], sizeof(double)), 0) << p << "[" << i << "]";
-      ++compared;
-    }
-  }
+  const std::size_t compared =
+      bitwise_equal_values(a, b, {"/mass_flow/time", "/mass_flow/out", "/film/thickness_mean", "/film/axial_velocity_mean"});
   EXPECT_GT(compared, 50u);
   const auto ta = centrec::io::H5File::open_read(dir + "/whole/results.h5").read("/steady/T");
   const auto tb = centrec::io::H5File::open_read(dir + "/stopped/results.h5").read("/steady/T");
