@@ -130,8 +130,10 @@ int run_replicas(const Args& args, const std::string& case_path, const std::stri
   io::write_json_file(out_dir + "/summary.json", s);
   std::printf("centrec run %s: mean +- standard deviation over %d DEM seeds (%s/summary.json \"replicas\")\n",
               case_path.c_str(), replicas, out_dir.c_str());
-  for (const auto& [path, f] : s["replicas"]["figures"].items())
+  for (const std::string& path : runs::replica_figures()) {
+    const auto& f = s["replicas"]["figures"][path];
     std::printf("  %-34s %.6g +- %.3g\n", path.c_str() + 1, f["mean"].get<double>(), f["std"].get<double>());
+  }
   for (const auto& w : s["warnings"]) std::printf("  WARNING: %s\n", w.get<std::string>().c_str());
   return 0;
 }
