@@ -15,6 +15,7 @@ std::string flags_text(const config::Overrides& o) {
   if (o.duration) flag("--duration", *o.duration);
   if (o.speed_rpm) flag("--speed-rpm", *o.speed_rpm);
   if (o.mass_flow) flag("--mass-flow", *o.mass_flow);
+  if (o.seed) flag("--seed", *o.seed);
   return s.str();
 }
 

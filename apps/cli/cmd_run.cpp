@@ -1,9 +1,12 @@
 // `centrec run CASE.yaml --out DIR`: the coupled DEM -> coupling -> thermal run.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <thread>
 #include <stdexcept>
 
 #include "cli/case_overrides.hpp"
+#include "cli/child_processes.hpp"
 #include "cli/command_line.hpp"
 #include "cli/plot_scripts.hpp"
 #include "cli/commands.hpp"
@@ -13,6 +16,7 @@
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
 #include "runs/provenance.hpp"
+#include "runs/replica_summary.hpp"
 #include "runs/interrupt.hpp"
 #include "runs/thermal_output.hpp"
 
@@ -22,7 +26,8 @@ namespace {
 void print_run_help() {
   std::printf(
       "usage: centrec run CASE.yaml --out DIR [--cache DIR] [--speed-rpm N] [--mass-flow KG_S]\n"
-      "                  [--threads N] [--no-plots] [--allow-small-drum] [--allow-unsteady]\n\n"
+      "                  [--threads N] [--seed N] [--replicas N] [--no-plots] [--allow-small-drum]\n"
+      "                  [--allow-unsteady]\n\n"
       "The coupled run (docs/architecture.md): the DEM of the case's `dem:` drum or slice\n"
       "(derived from `receiver:` by eqs 1-3 when receiver.dem_diameter_d is given), run until\n"
       "its flow is steady; its film as measured (full-circumference profiles per section, cut\n"
@@ -42,7 +47,12 @@ void print_run_help() {
       "The DEM outputs are cached in CACHE/<hash of every DEM input> (default: the parent of\n"
       "DIR + /dem-cache): a thermal-only change reruns in seconds. A case with `film: {file:}`\n"
       "skips the DEM. --speed-rpm and --mass-flow replace the receiver's operating point (or\n"
-      "the DEM drum's, without a receiver); `centrec sweep` uses them.\n\n"
+      "the DEM drum's, without a receiver); `centrec sweep` uses them. --seed replaces\n"
+      "dem.seed.\n"
+      "--replicas N runs the whole chain N times, with DEM seeds dem.seed, dem.seed + 1, ...,\n"
+      "into DIR/replica_<k>/ (as many at a time as there are threads, the threads shared out),\n"
+      "and writes DIR/summary.json with the mean and standard deviation over the seeds of T_out,\n"
+      "efficiency, k_eff and its parts, film thickness and flux closure (\"replicas\").\n\n"
       "Writes DIR/summary.json (outlet temperature, efficiency, k_eff and its parts, film\n"
       "thickness, mdot, scaling, wall time per stage), DIR/results.h5 (thermal fields, /film,\n"
       "/coupling), DIR/results.xmf (the temperature field for ParaView), DIR/film.h5 (the film\n"
@@ -57,6 +67,75 @@ std::string parent_of(const std::string& dir) {
   while (d.size() > 1 && d.back() == '/') d.pop_back();
   const std::size_t slash = d.rfind('/');
   return slash == std::string::npos ? "." : d.substr(0, slash);
+}
+// `--replicas N`: the same command N times as child processes, seed base + k into
+// DIR/replica_<k>/, then the spread of the headline figures (runs/replica_summary.hpp).
+int run_replicas(const Args& args, const std::string& case_path, const std::string& out_dir,
+                 const config::CaseFile& cf, const runs::RunOptions& o, int replicas, bool no_plots) {
+  if (!(cf.dem && cf.thermal && cf.thermal->film_source == "dem"))
+    throw UsageError(case_path + ": --replicas repeats the DEM with other seeds, but this case has no DEM film");
+  const long long base = o.seed >= 0 ? o.seed : static_cast<long long>(cf.dem->scene.seed);
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = o.threads > 0 ? o.threads : cores;
+  const int parallel = std::min(replicas, threads);
+  const int per_child = std::max(1, threads / parallel);
+  io::ensure_directory(out_dir);
+  // The command as given, minus the flags this sets per replica.
+  std::vector<std::string> common;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const std::string& a = args[k];
+    const bool with_value = a == "--out" || a == "--seed" || a == "--replicas" || a == "--threads" || a == "--cache";
+    if (with_value) {
+      ++k;
+      continue;
+    }
+    if (a.rfind("--out=", 0) == 0 || a.rfind("--seed=", 0) == 0 || a.rfind("--replicas=", 0) == 0 ||
+        a.rfind("--threads=", 0) == 0 || a.rfind("--cache=", 0) == 0 || a == "--no-plots")
+      continue;
+    common.push_back(a);
+  }
+  const std::string exe = own_executable();
+  std::vector<ChildJob> jobs;
+  std::vector<std::uint64_t> seeds;
+  std::vector<std::string> dirs;
+  for (int k = 0; k < replicas; ++k) {
+    const std::string dir = out_dir + "/replica_" + std::to_string(k);
+    io::ensure_directory(dir);
+    ChildJob job{{exe, "run"}, dir + "/run.log"};
+    job.argv.insert(job.argv.end(), common.begin(), common.end());
+    job.argv.insert(job.argv.end(), {"--out", dir, "--cache", o.cache_dir, "--seed", std::to_string(base + k),
+                                     "--threads", std::to_string(per_child)});
+    if (no_plots || k > 0) job.argv.push_back("--no-plots");  // replica 0 draws the figures
+    jobs.push_back(job);
+    seeds.push_back(static_cast<std::uint64_t>(base + k));
+    dirs.push_back(dir);
+  }
+  std::printf("centrec run %s: %d replicas (seeds %lld-%lld), %d at a time with %d DEM thread(s) each\n",
+              case_path.c_str(), replicas, base, base + replicas - 1, parallel, per_child);
+  std::fflush(stdout);
+  const int failed = run_child_jobs(jobs, parallel, nullptr, [&](std::size_t k) {
+    std::printf("  replica %zu (seed %llu): %s\n", k, static_cast<unsigned long long>(seeds[k]),
+                jobs[k].status == 0 ? "done" : ("FAILED (exit " + std::to_string(jobs[k].status) + "), see " +
+                                                jobs[k].log).c_str());
+    std::fflush(stdout);
+  });
+  if (failed) {
+    std::fprintf(stderr, "centrec run: %d of %d replicas failed; the others are in %s/replica_*\n", failed, replicas,
+                 out_dir.c_str());
+    return 1;
+  }
+  std::vector<nlohmann::json> summaries;
+  for (const auto& dir : dirs) summaries.push_back(io::read_json_file(dir + "/summary.json"));
+  nlohmann::json s = runs::combine_replicas(summaries, seeds, dirs);
+  io::write_json_file(out_dir + "/summary.json", s);
+  std::printf("centrec run %s: mean +- standard deviation over %d DEM seeds (%s/summary.json \"replicas\")\n",
+              case_path.c_str(), replicas, out_dir.c_str());
+  for (const std::string& path : runs::replica_figures()) {
+    const auto& f = s["replicas"]["figures"][path];
+    std::printf("  %-34s %.6g +- %.3g\n", path.c_str() + 1, f["mean"].get<double>(), f["std"].get<double>());
+  }
+  for (const auto& w : s["warnings"]) std::printf("  WARNING: %s\n", w.get<std::string>().c_str());
+  return 0;
 }
 }  // namespace
 
@@ -76,6 +155,9 @@ int cmd_run(const Args& args) {
   app.add_option("--speed-rpm", o.speed_rpm)->check(number_in(config::Range::open_closed(0.0, 1e5), "rpm"));
   app.add_option("--mass-flow", o.mass_flow)->check(number_in(config::Range::open_closed(0.0, 1e4), "kg/s"));
   app.add_option("--threads", o.threads)->check(integer_in(0, 1024));
+  app.add_option("--seed", o.seed)->check(integer_in(0, 2147483647));
+  int replicas = 1;
+  app.add_option("--replicas", replicas)->check(integer_in(1, 64));
   app.add_flag("--no-plots", no_plots);
   app.add_flag("--allow-small-drum", o.allow_small_drum,
                "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
@@ -87,6 +169,7 @@ int cmd_run(const Args& args) {
   const config::CaseFile cf = config::read_case_file(case_path);
   const config::Overrides overrides = runs::run_overrides(o);
   if (cf.dem && cf.thermal && cf.thermal->film_source == "dem") checked_dem(cf, overrides);
+  if (replicas > 1) return run_replicas(args, case_path, out_dir, cf, o, replicas, no_plots);
   const io::OutputFolder out(out_dir);
   runs::CoupledRun r;
   try {

@@ -38,6 +38,7 @@ DemCase effective_dem(const DemCase& dem, const ReceiverCase* receiver, const Ov
   DemCase d = dem;
   if (o.threads) d.scene.threads = *o.threads;
   if (o.duration) d.run.duration = *o.duration;
+  if (o.seed) d.scene.seed = *o.seed;
   if (receiver) {
     apply_receiver(effective_receiver(*receiver, o), d, o.any_operating_point());
   } else {

@@ -3,6 +3,7 @@
 // reader calls them on the DEM a case describes, so `centrec validate` refuses what
 // `centrec dem` and `centrec run` refuse, and the commands call them again on the DEM they
 // will actually run (receiver derivation and command-line values applied).
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -20,6 +21,7 @@ struct Overrides {
   std::optional<double> duration;   // dem.run.duration, s
   std::optional<double> speed_rpm;  // the receiver's speed, or the DEM drum's without a receiver
   std::optional<double> mass_flow;  // the receiver's mass flow, or the DEM feeder's, kg/s
+  std::optional<std::uint64_t> seed;  // dem.seed (a replica of the same case)
   bool any_operating_point() const { return speed_rpm || mass_flow; }
 };
 

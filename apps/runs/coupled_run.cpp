@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <stdexcept>
 
@@ -13,6 +12,7 @@
 #include "dem/scene/scene_config.hpp"
 #include "io/code_version.hpp"
 #include "io/dem_film_h5.hpp"
+#include "io/summary_json.hpp"
 #include "runs/dem_cache.hpp"
 #include "runs/dem_case_run.hpp"
 
@@ -64,6 +64,7 @@ config::Overrides run_overrides(const RunOptions& o) {
   if (o.threads >= 0) ov.threads = o.threads;
   if (o.speed_rpm > 0.0) ov.speed_rpm = o.speed_rpm;
   if (o.mass_flow > 0.0) ov.mass_flow = o.mass_flow;
+  if (o.seed >= 0) ov.seed = static_cast<std::uint64_t>(o.seed);
   return ov;
 }
 
@@ -96,8 +97,7 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
     r.dem_dir = cached.dir;
     r.dem_cached = cached.hit;
     r.dem_resumed_from = cached.resumed_from;
-    std::ifstream js(r.dem_dir + "/summary.json");
-    r.dem_summary = nlohmann::json::parse(js);
+    r.dem_summary = io::read_json_file(r.dem_dir + "/summary.json");
     r.dem_seconds = since(t0);
     // 2. Mapping, scale-up, mass-flux conservation.
     const auto t1 = std::chrono::steady_clock::now();

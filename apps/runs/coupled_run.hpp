@@ -27,6 +27,7 @@ struct RunOptions {
   double speed_rpm = 0.0;     // > 0: the receiver's (or, without one, the DEM drum's) speed
   double mass_flow = 0.0;     // > 0: the receiver's (or the DEM feeder's) mass flow, kg/s
   int threads = -1;           // DEM threads (-1 = from the case)
+  long long seed = -1;        // >= 0: the DEM's random seed instead of dem.seed (a replica)
   bool allow_small_drum = false;  // run a DEM drum below coupling::kMinimumDrumDiameterOverD
   bool allow_unsteady = false;    // use a film that is not steady or fails the flux closure
 };

@@ -20,10 +20,12 @@ namespace fs = std::filesystem;
 
 std::string dem_cache_key(const std::string& resolved_dem_yaml, const config::DemCase& e, const std::string& version) {
   // The resolved section holds every key with its default; the values a receiver derives
-  // (drum and flow) are not in it, so they are appended at full precision.
-  char derived[256];
-  std::snprintf(derived, sizeof derived, "\nderived: %.17g %.17g %.17g %.17g %.17g\n", e.scene.drum.diameter,
-                e.scene.drum.length, e.scene.drum.omega, e.scene.drum.tilt, dem::scene::target_mass_flow(e.scene));
+  // (drum and flow) are not in it, nor is a seed given on the command line (a replica), so
+  // they are appended at full precision.
+  char derived[320];
+  std::snprintf(derived, sizeof derived, "\nderived: %.17g %.17g %.17g %.17g %.17g\nseed: %llu\n", e.scene.drum.diameter,
+                e.scene.drum.length, e.scene.drum.omega, e.scene.drum.tilt, dem::scene::target_mass_flow(e.scene),
+                static_cast<unsigned long long>(e.scene.seed));
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx",
                 static_cast<unsigned long long>(io::fnv1a64(resolved_dem_yaml + derived + "version: " + version)));

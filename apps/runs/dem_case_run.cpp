@@ -59,11 +59,20 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   const double chunk = std::max(sim.dt() * scene.steps_per_batch(), std::min(0.01, dc.run.duration));
   const double steps_before = ck ? ck->particle_steps : 0.0, wall_before = ck ? ck->wall_time : 0.0;
   double particle_steps = 0.0;  // this process's
-  // Progress lines carry the outlet and inlet flow over the last turn.
+  // Progress lines carry the flow over the last turn: a drum's outlet and inlet, a slice's
+  // axial flow (and its controller's target) and free particles.
+  const bool slice = dc.scene.slice.enabled;
+  const double target = dc.scene.slice.target_mass_flow;
   auto flows = [&] {
     const auto w = dem::scene::window_flows(scene.mass_flow_log(), period);
-    char b[96];
-    std::snprintf(b, sizeof b, "outlet %.2f g/s, inlet %.2f g/s", w.out * 1e3, w.fed * 1e3);
+    char b[128];
+    if (slice && target > 0.0)
+      std::snprintf(b, sizeof b, "slice flow %.2f g/s (target %.2f), %zu particles", w.axial * 1e3, target * 1e3,
+                    sim.size());
+    else if (slice)
+      std::snprintf(b, sizeof b, "slice flow %.2f g/s", w.axial * 1e3);
+    else
+      std::snprintf(b, sizeof b, "outlet %.2f g/s, inlet %.2f g/s", w.out * 1e3, w.fed * 1e3);
     return std::string(b);
   };
   auto advance = [&](auto&& body) {
