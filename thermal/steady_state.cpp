@@ -5,6 +5,7 @@
 #include <sunlinsol/sunlinsol_band.h>
 #include <sunmatrix/sunmatrix_band.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -70,6 +71,7 @@ bool apply_low_rank(OdeSystem& sys, const std::vector<double>& y, SUNLinearSolve
 // y and residual hold the best state found.
 int newton_polish(OdeSystem& sys, std::vector<double>& y, double& residual, const SteadySettings& s,
                   int max_iterations) {
+  double tolerance = steady_tolerance(sys, y, s);
   const long n = sys.size();
   SUNContext ctx = nullptr;
   SUNContext_Create(nullptr, &ctx);
@@ -78,7 +80,7 @@ int newton_polish(OdeSystem& sys, std::vector<double>& y, double& residual, cons
   SUNLinearSolver LS = SUNLinSol_Band(x, A, ctx);
   std::vector<double> f(n), trial(n);
   int it = 0;
-  for (; it < max_iterations && residual > s.tolerance; ++it) {
+  for (; it < max_iterations && residual > tolerance; ++it) {
     if (!sys.rhs(0.0, y.data(), f.data())) break;
     SUNMatZero(A);
     const BandEntrySink sink = [A](long r, long c, double v) { SM_ELEMENT_B(A, r, c) = v; };
@@ -97,6 +99,7 @@ int newton_polish(OdeSystem& sys, std::vector<double>& y, double& residual, cons
         y.swap(trial);
         residual = r;
         improved = true;
+        tolerance = steady_tolerance(sys, y, s);
         break;
       }
     }
@@ -126,6 +129,7 @@ class Budgeted : public OdeSystem {
     return !expired() && sys_.jacobian(t, y, fy, sink);
   }
   double steady_residual(double t, const double* y) override { return sys_.steady_residual(t, y); }
+  double steady_residual_floor(double t, const double* y) override { return sys_.steady_residual_floor(t, y); }
   double time_scale() const override { return sys_.time_scale(); }
   int low_rank_jacobian(double t, const double* y, std::vector<double>& U, std::vector<double>& V) override {
     return sys_.low_rank_jacobian(t, y, U, V);
@@ -147,19 +151,28 @@ class Budgeted : public OdeSystem {
 }
 }  // namespace
 
+double steady_tolerance(OdeSystem& system, const std::vector<double>& y, const SteadySettings& settings) {
+  return std::max(settings.tolerance, settings.round_off_factor * system.steady_residual_floor(0.0, y.data()));
+}
+
 SteadyResult solve_steady(OdeSystem& outer, const std::vector<double>& y0, const SteadySettings& s) {
   Budgeted sys(outer, s.max_wall_seconds);
   SteadyResult r;
   r.y = y0;
   r.residual = sys.steady_residual(0.0, r.y.data());
-  if (s.newton_first && r.residual > s.tolerance) {
+  auto finish = [&](SteadyResult& res) {
+    res.residual_floor = sys.steady_residual_floor(0.0, res.y.data());
+    res.tolerance = steady_tolerance(sys, res.y, s);
+  };
+  if (s.newton_first && r.residual > steady_tolerance(sys, r.y, s)) {
     std::vector<double> y = r.y;
     double res = r.residual;
     const int it = newton_polish(sys, y, res, s, s.max_newton_first);
     r.newton_iterations += it;
-    if (res <= s.tolerance) {
+    if (res <= steady_tolerance(sys, y, s)) {
       r.y = y;
       r.residual = res;
+      finish(r);
       return r;
     }
   }
@@ -167,28 +180,29 @@ SteadyResult solve_steady(OdeSystem& outer, const std::vector<double>& y0, const
   CvodeIntegrator cv(sys, s.integrator, 0.0, r.y);
   double t = 0.0, t_next = 0.05 * tau;
   bool restart = false;
-  while (r.residual > s.tolerance) {
+  while (r.residual > steady_tolerance(sys, r.y, s)) {
     if (r.residual < s.polish_below) {
       const double before = r.residual;
       r.newton_iterations += newton_polish(sys, r.y, r.residual, s, s.max_newton);
-      if (r.residual <= s.tolerance) break;
+      if (r.residual <= steady_tolerance(sys, r.y, s)) break;
       restart = r.residual < before;  // Newton moved y: CVODE must restart from there
     }
     if (t >= s.max_time_factor * tau) {
-      char buf[256];
+      char buf[320];
       std::snprintf(buf, sizeof buf,
                     "no steady state after marching %.4g s (%.0f time scales): scaled residual %.3g > tolerance "
-                    "%.3g; the operating point may oscillate or the tolerance is below round-off",
-                    t, s.max_time_factor, r.residual, s.tolerance);
+                    "%.3g (round-off level %.3g); the operating point may oscillate",
+                    t, s.max_time_factor, r.residual, steady_tolerance(sys, r.y, s),
+                    sys.steady_residual_floor(0.0, r.y.data()));
       throw SolverError(buf);
     }
     if (restart) cv.reinit(t, r.y);
     restart = false;
-    if (sys.expired()) out_of_time(s.max_wall_seconds, t, r.residual, s.tolerance);
+    if (sys.expired()) out_of_time(s.max_wall_seconds, t, r.residual, steady_tolerance(sys, r.y, s));
     try {
       cv.advance(t_next, r.y);
     } catch (const SolverError&) {
-      if (sys.expired()) out_of_time(s.max_wall_seconds, t, r.residual, s.tolerance);
+      if (sys.expired()) out_of_time(s.max_wall_seconds, t, r.residual, steady_tolerance(sys, r.y, s));
       throw;
     }
     t = t_next;
@@ -198,6 +212,7 @@ SteadyResult solve_steady(OdeSystem& outer, const std::vector<double>& y0, const
   r.march_time = t;
   r.marched = true;
   r.stats = cv.stats();
+  finish(r);
   return r;
 }
 
