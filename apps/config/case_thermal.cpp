@@ -183,8 +183,8 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                                              " cells needs about " + std::to_string(static_cast<long long>(bytes / 1e9)) +
                                              " GB for its band Jacobian (at most 4): use fewer cells");
   g.finish();
-  c.grid.advection = t.choice("advection", "upwind", {"upwind", "van_leer"}) == "upwind" ? th::Advection::upwind
-                                                                                         : th::Advection::van_leer;
+  c.grid.advection = t.choice("advection", "van_leer", {"van_leer", "upwind"}) == "upwind" ? th::Advection::upwind
+                                                                                           : th::Advection::van_leer;
   m.T_in = t.number("T_in", 873.15, kTemperature, "K");
   read_conductivity(t.child("conductivity"), m);
   MapReader hc = t.child("heat_capacity");
