@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "cavity_convection.hpp"
@@ -374,18 +375,11 @@ bool FilmOperator::jacobian(double t, const double* y, const double*, const Band
   return true;
 }
 
-double FilmOperator::steady_residual(double t, const double* y) {
-  const long n = size();
-  for (long p = 0; p < n; ++p)
-    if (!(y[p] > 0.0) || !std::isfinite(y[p])) return INFINITY;
-  for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
-  const Inputs in = inputs_at(t);
-  if (cavity_) update_cavity(y, in);
-  double sum = 0.0;
-  for (long p = 0; p < n; ++p) sum += std::abs(cell_residual(static_cast<int>(p), y, props_.data(), in));
-  // Scale: the absorbed power, at least the power of a 1 K rise of the flow. Without
-  // flux, the power the flow carries above its coldest surroundings (what it can lose):
-  // a 1 K scale there asks the residual to resolve below the round-off of the losses.
+double FilmOperator::residual_scale(const Inputs& in) const {
+  // The absorbed power, at least the power of a 1 K rise of the flow. Without flux, the
+  // power the flow carries above its coldest surroundings (what it can lose): a 1 K scale
+  // there asks the residual to resolve below the round-off of the losses. props_ must hold
+  // the current state's props.
   double scale = 0.0;
   for (int i = 0; i < grid_.nz; ++i) scale += model_.material.alpha * q_column_[i] * in.flux_factor * grid_.dz;
   const double sink = std::min({model_.surface.T_env, model_.surface.T_air, model_.wall.T_amb});
@@ -395,10 +389,65 @@ double FilmOperator::steady_residual(double t, const double* y) {
     // Neither flux nor flow (a resting film with sources): heating the film by 1 K over
     // its conduction time.
     double capacity = 0.0;
-    for (long p = 0; p < n; ++p) capacity += props_[p].capacity;
+    for (long p = 0; p < size(); ++p) capacity += props_[p].capacity;
     scale = capacity / time_scale();
   }
-  return sum / scale;
+  return scale;
+}
+
+double FilmOperator::steady_residual(double t, const double* y) {
+  const long n = size();
+  for (long p = 0; p < n; ++p)
+    if (!(y[p] > 0.0) || !std::isfinite(y[p])) return INFINITY;
+  for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
+  const Inputs in = inputs_at(t);
+  if (cavity_) update_cavity(y, in);
+  double sum = 0.0;
+  for (long p = 0; p < n; ++p) sum += std::abs(cell_residual(static_cast<int>(p), y, props_.data(), in));
+  return sum / residual_scale(in);
+}
+
+double FilmOperator::steady_residual_floor(double t, const double* y) {
+  // A temperature is known to half an ulp, ~1.1e-16 T, so a cell's residual cannot be
+  // brought below its conductance to all neighbours and boundaries (conduction, the
+  // advected c_p m of every face, wall, surface) times that: sum over cells of
+  // eps_machine T_p G_p over the same scale as steady_residual. It grows with the
+  // conductivity and the cell count (G ~ k dz / deta); at the design point it is ~1e-12.
+  const long n = size();
+  for (long p = 0; p < n; ++p)
+    if (!(y[p] > 0.0) || !std::isfinite(y[p])) return 0.0;
+  for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
+  const Inputs in = inputs_at(t);
+  const FilmGrid& g = grid_;
+  const int nxi = g.nxi, nz = g.nz;
+  const double s = in.flow_factor;
+  const auto& sf = model_.surface;
+  const double radiative = 4.0 * model_.material.epsilon * kStefanBoltzmann * (cavity_ ? 1.0 : sf.loss_factor);
+  const double h = cavity_ ? cavity_->h : sf.h_conv;
+  double sum = 0.0;
+  for (long p = 0; p < n; ++p) {
+    const int i = static_cast<int>(p) / nxi, j = static_cast<int>(p) % nxi;
+    const CellProps& P = props_[p];
+    double G = s * (g.m_axial[i * nxi + j] + g.m_axial[(i + 1) * nxi + j]) * P.cp;
+    if (P.kz > 0) {
+      G += i == 0 ? P.kz * (g.tf[0] / nxi) / (0.5 * g.dz)
+                  : harmonic(props_[p - nxi].kz, P.kz) * 0.5 * (g.deta[i - 1] + g.deta[i]) / g.dz;
+      if (i + 1 < nz) G += harmonic(props_[p + nxi].kz, P.kz) * 0.5 * (g.deta[i + 1] + g.deta[i]) / g.dz;
+    }
+    if (j == 0) {
+      if (!model_.wall.adiabatic) G += g.dz / (1.0 / model_.wall.U_w + (g.lumped ? 0.0 : 0.5 * g.deta[i] / P.kn));
+    } else {
+      G += s * std::abs(g.m_xi[i * (nxi + 1) + j]) * P.cp + harmonic(props_[p - 1].kn, P.kn) * g.dz / g.deta[i];
+    }
+    const double Tp = y[p];
+    if (j == nxi - 1) {
+      G += (radiative * Tp * Tp * Tp + h) * g.dz;
+    } else {
+      G += s * std::abs(g.m_xi[i * (nxi + 1) + j + 1]) * P.cp + harmonic(props_[p + 1].kn, P.kn) * g.dz / g.deta[i];
+    }
+    sum += G * Tp;
+  }
+  return std::numeric_limits<double>::epsilon() * sum / residual_scale(in);
 }
 
 int FilmOperator::low_rank_jacobian(double t, const double* y, std::vector<double>& U, std::vector<double>& V) {

@@ -77,6 +77,7 @@ class FilmOperator : public OdeSystem {
   bool rhs(double t, const double* y, double* ydot) override;
   bool jacobian(double t, const double* y, const double* fy, const BandEntrySink& sink) override;
   double steady_residual(double t, const double* y) override;
+  double steady_residual_floor(double t, const double* y) override;
   double time_scale() const override;
   // Cavity model: the radiation exchange between rings, U V^T with one column per ring.
   int low_rank_jacobian(double t, const double* y, std::vector<double>& U, std::vector<double>& V) override;
@@ -124,6 +125,7 @@ class FilmOperator : public OdeSystem {
     return model_.surface.absorb_depth_layers > 0 || model_.surface.extinction_depth_d != 0;
   }
   double cell_residual(int p, const double* T, const CellProps* pr, const Inputs& in) const;
+  double residual_scale(const Inputs& in) const;  // the power steady_residual is divided by, W/m
 
   FilmGrid grid_;
   FilmModel model_;

@@ -26,6 +26,11 @@ class OdeSystem {
   // A dimensionless size of f(t, y) used to decide a steady state (1 = of the order of the
   // system's throughput); the steady solver stops when it falls below its tolerance.
   virtual double steady_residual(double t, const double* y) = 0;
+  // The part of steady_residual that round-off alone leaves at a steady state (same scale):
+  // the steady solver asks for no less than a multiple of it, so a tolerance that is fine
+  // for one problem does not lie below the round-off of another (large conductivities,
+  // fine grids). 0: unknown (the tolerance is taken as given).
+  virtual double steady_residual_floor(double /*t*/, const double* /*y*/) { return 0.0; }
   // Time scale of the slowest transport (residence time or conduction time), s.
   virtual double time_scale() const = 0;
   // Optional low-rank part of the Jacobian that the band cannot hold (e.g. radiation

@@ -13,6 +13,10 @@ namespace centrec::thermal {
 
 struct SteadySettings {
   double tolerance = 1e-10;       // on OdeSystem::steady_residual
+  // The tolerance applied is max(tolerance, round_off_factor x OdeSystem::steady_residual_floor):
+  // it scales with the problem where round-off would keep the residual above `tolerance`
+  // (large conductivities, fine grids), and is `tolerance` everywhere else.
+  double round_off_factor = 4.0;
   double polish_below = 1e-3;     // start Newton once marching brought the residual below this
   double max_time_factor = 1e4;   // give up after this many system time scales of marching
   int max_newton = 12;
@@ -30,11 +34,16 @@ struct SteadySettings {
 struct SteadyResult {
   std::vector<double> y;
   double residual = 0.0;
+  double tolerance = 0.0;    // the tolerance applied (see SteadySettings::round_off_factor)
+  double residual_floor = 0.0;  // OdeSystem::steady_residual_floor at the result
   double march_time = 0.0;   // simulated time marched, s
   int newton_iterations = 0;
   bool marched = false;      // false if Newton alone converged from y0
   SolverStats stats;
 };
+
+// The tolerance applied at state y (SteadySettings::round_off_factor).
+double steady_tolerance(OdeSystem& system, const std::vector<double>& y, const SteadySettings& settings);
 
 // Throws SolverError if no steady state is reached (within max_time_factor time scales of
 // marching and max_wall_seconds of wall time).

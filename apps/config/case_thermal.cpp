@@ -208,8 +208,10 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                                              " cells needs about " + std::to_string(static_cast<long long>(bytes / 1e9)) +
                                              " GB for its band Jacobian (at most 4): use fewer cells");
   g.finish();
-  c.grid.advection = t.choice("advection", "upwind", {"upwind", "van_leer"}, "advection scheme along z") == "upwind" ? th::Advection::upwind
-                                                                                         : th::Advection::van_leer;
+  c.grid.advection = t.choice("advection", "van_leer", {"van_leer", "upwind"},
+                              "advection scheme along z (van Leer: second order; upwind: first order)") == "upwind"
+                         ? th::Advection::upwind
+                         : th::Advection::van_leer;
   m.T_in = t.number("T_in", 873.15, kTemperature, "K", "particle inlet temperature");
   read_conductivity(t.child("conductivity", "effective conductivity of the film"), m);
   MapReader hc = t.child("heat_capacity", "the particles' specific heat");

@@ -1,9 +1,13 @@
 // Where methods fail: a cell Peclet number of 1e4 with a flux that jumps along
 // the film stays within the physical bounds; a radiation-dominated 1000 C film converges
-// both by Newton and by marching.
+// both by Newton and by marching; a film with a conductivity of 1e4-1e5 W/(m K), whose
+// round-off lies above the absolute tolerance 1e-10, converges to the tolerance scaled with
+// its round-off level, by Newton and by marching to the same outlet temperature (within ten
+// times the tolerance applied times the temperature rise: 3e-5 K at 1e4, 2e-4 K at 1e5).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -80,4 +84,57 @@ TEST(FilmStability, RadiationDominated1000CConvergesByNewtonAndByMarching) {
   }
   std::printf("|T_out(Newton) - T_out(marching)| = %.2e K (tolerance 1e-6 K)\n", std::abs(T_out[0] - T_out[1]));
   EXPECT_NEAR(T_out[0], T_out[1], 1e-6);
+}
+
+TEST(FilmStability, LargeConductivityConvergesToRoundOffScaledTolerance) {
+  // The CentRec operating point with a constant conductivity of 1e4 and 1e5 W/(m K) (a
+  // strongly mixed film): its cell residuals cannot fall below ~3e-10 and ~3e-9 of the
+  // absorbed power (a temperature's half ulp times the cell conductance), so an absolute
+  // tolerance of 1e-10 is never met and the solve runs into its wall-time budget.
+  for (double k : {1e4, 1e5}) {
+    FilmModel m = centrec_model();
+    m.conductivity.k_constant = k;
+    m.conductivity.mixing = false;
+    double T_out[2], tolerance = 0.0;
+    for (int pass = 0; pass < 2; ++pass) {
+      FilmOperator op(analytic_film(centrec_film()), m, FilmGridSpec{});
+      op.freeze_inputs(true);
+      SteadySettings s;
+      s.newton_first = pass == 0;
+      s.max_wall_seconds = 60.0;
+      const auto t0 = std::chrono::steady_clock::now();
+      const SteadyResult r = solve_steady(op, op.uniform_state(m.T_in), s);
+      const double seconds = seconds_since(t0);
+      const FilmBalance b = op.balance(0.0, r.y.data());
+      T_out[pass] = b.T_out;
+      tolerance = std::max(tolerance, r.tolerance);
+      // Depth spread of the outlet column: a strongly conducting film is nearly isothermal.
+      const int nxi = op.grid().nxi, last = (op.grid().nz - 1) * nxi;
+      const double spread = r.y[last + nxi - 1] - r.y[last];
+      std::printf("k = %.0e W/(m K), %s: residual %.3g <= tolerance applied %.3g (round-off level %.3g, "
+                  "absolute 1e-10), %d Newton iterations, %.2f s; T_out %.6f K, outlet depth spread %.3f K\n",
+                  k, pass == 0 ? "Newton first" : "marching", r.residual, r.tolerance, r.residual_floor,
+                  r.newton_iterations, seconds, b.T_out, spread);
+      EXPECT_LE(r.residual, r.tolerance);
+      EXPECT_GT(r.tolerance, 1e-10);                // scaled above the absolute tolerance...
+      EXPECT_LT(r.tolerance, 1e-12 * k);            // ...in proportion to k, not more
+      EXPECT_GT(b.T_out, m.T_in);
+      EXPECT_LT(std::abs(spread), 2.0);
+    }
+    // A scaled residual r leaves T_out uncertain by about r times the film's temperature rise.
+    const double bound = 10.0 * tolerance * (T_out[0] - m.T_in);
+    std::printf("k = %.0e W/(m K): |T_out(Newton) - T_out(marching)| = %.2e K (tolerance 10 x tolerance applied x "
+                "rise = %.2e K)\n",
+                k, std::abs(T_out[0] - T_out[1]), bound);
+    EXPECT_NEAR(T_out[0], T_out[1], bound);
+  }
+  // At the design point (ZBS bed + mixing, k_n ~ 10 W/(m K)) the round-off level is far
+  // below 1e-10: the tolerance applied is the absolute one, so results there do not move.
+  FilmModel m = centrec_model();
+  FilmOperator op(analytic_film(centrec_film()), m, FilmGridSpec{});
+  op.freeze_inputs(true);
+  const SteadyResult r = solve_steady(op, op.uniform_state(m.T_in), SteadySettings{});
+  std::printf("design point (ZBS + mixing): round-off level %.3g, tolerance applied %.3g (absolute 1e-10)\n",
+              r.residual_floor, r.tolerance);
+  EXPECT_EQ(r.tolerance, 1e-10);
 }
