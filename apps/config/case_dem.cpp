@@ -126,6 +126,9 @@ DemCase read_dem_case(MapReader root) {
   sp.bin_width_d = samp.number("bin_width_d", sp.bin_width_d, Range::closed(0.05, 5.0));
   sp.bins = static_cast<int>(samp.integer("bins", sp.bins, 1, 1000));
   sp.zone_threshold = samp.number("zone_threshold", sp.zone_threshold, Range::open_closed(0.0, 1.0));
+  sp.dispersion_spacing = samp.number("dispersion_spacing", sp.dispersion_spacing, Range::closed(0.0, 1.0),
+                                      "s between the dispersion's position samples (0 = one feeder batch)");
+  sp.dispersion_lags = static_cast<int>(samp.integer("dispersion_lags", sp.dispersion_lags, 2, 1000));
   samp.finish();
 
   root.finish();

@@ -160,10 +160,11 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   const int per_turn = sampler.spec().snapshots_per_turn;
   const int stride = io::snapshot_stride(turns * per_turn, static_cast<double>(sim.size()));
   int taken = sampled * per_turn;  // sampled snapshots so far, counted from the start of sampling
-  // One turn as SceneSampler::sample_turns does it, keeping every stride-th snapshot.
+  // One turn as SceneSampler::sample_turns does it (each interval with the dispersion's
+  // burst of position samples), keeping every stride-th snapshot.
   auto sample_turn = [&] {
     for (int k = 0; k < per_turn; ++k) {
-      advance([&] { scene.advance(period / per_turn); });
+      advance([&] { sampler.advance_interval(scene); });
       dem::scene::SnapshotArrays s = dem::scene::take_snapshot(sim);
       if (++taken % stride == 0) keep(s, true);
       sampler.add_snapshot(std::move(s));
