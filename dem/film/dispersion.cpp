@@ -150,10 +150,13 @@ std::vector<DispersionBin> DispersionEstimator::result() const {
       const std::size_t i = static_cast<std::size_t>(k * columns) + valid.front();
       b.drift = -pooled.sum[i] / pooled.n[i] / tau[valid.front()];  // dw = -dr
     }
-    // Lags short against the bin-crossing time: iterate the longest lag to a fixed point,
-    // keeping at least the two shortest.
+    // Lags short against the bin-crossing time: from the two shortest lags, widen (or
+    // narrow) the range to the lags <= crossing_fraction * t_x of the current D until it
+    // stops changing. Starting short matters: where the MSD saturates or falls at long lags
+    // (a thin loose top, particles falling back), a fit over every lag gives D <= 0, an
+    // infinite t_x, and would keep every lag.
     const double floor_lag = tau[valid[1]];
-    double tau_max = tau[valid.back()];
+    double tau_max = floor_lag;
     double D = msd_slope_coefficient(tau, b.msd, tau_max);
     for (std::size_t it = 0; it < valid.size(); ++it) {
       const double tx = D > 0.0 ? w * w / (2.0 * D) : kInf;

@@ -19,7 +19,7 @@
 // to diffuse across the bin (w_bin its width): lags short against the bin-crossing time,
 // so the wall and the free surface do not bound the displacement and the particle stays
 // where D is the bin's. t_x comes from D itself, so the lag range is iterated to a fixed
-// point; at least the two shortest lags are used (the bin then reports a lag range longer
+// point starting from the two shortest lags; at least those two are used (the bin then reports a lag range longer
 // than crossing_fraction * t_x). The intercept c takes up the ballistic start of the MSD
 // (c < 0) and position noise (c > 0).
 //
