@@ -34,8 +34,9 @@ MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut) {
   const std::size_t nb = a.wall_distance_d.size();
   const double d = a.particle_diameter, w = a.bin_width_d() * d, R = a.drum_radius;
 
-  // Dispersion: one profile for the whole film (the DEM pools it over the drum); bins where
-  // it was not measured take the nearest measured bin's value.
+  // Dispersion: one profile for the whole film, measured by the DEM over its developed film
+  // (docs/film_sampling.md "Wall-normal dispersion"); bins where it was not measured take
+  // the nearest measured bin's value.
   std::vector<double> D = a.dispersion, D_sd = a.dispersion_std;
   for (std::size_t k = 0; k < nb; ++k)
     if (!(D[k] >= 0.0)) D[k] = D_sd[k] = NAN;

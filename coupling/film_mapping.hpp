@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "coupling/dem_film_averages.hpp"
+#include "dem/film/developed_film.hpp"
 #include "thermal/film_field.hpp"
 
 namespace centrec::coupling {
@@ -21,8 +22,10 @@ namespace centrec::coupling {
 // The solid fraction below which the DEM's top bins are the loose particles above the
 // film, not film (docs/coupling.md "Film as measured": what the cut leaves out is reported).
 constexpr double kFilmSolidFractionCut = 0.1;
-// A drum's developed film: the axial sections used, as fractions of its length.
-constexpr double kDevelopedFrom = 0.2, kDevelopedTo = 0.8;
+// A drum's developed film: the axial sections used, as fractions of its length (the same
+// window as the DEM's solid-fraction and dispersion samplers).
+using film::kDevelopedFrom;
+using film::kDevelopedTo;
 
 struct FilmCut {
   double phi_cut = 0.0;

@@ -173,6 +173,10 @@ DemCase read_dem_case(MapReader root) {
   sp.bins = static_cast<int>(samp.integer("bins", sp.bins, 1, 1000, "wall-distance bins of the profiles"));
   sp.zone_threshold = samp.number("zone_threshold", sp.zone_threshold, Range::open_closed(0.0, 1.0), "",
                                   "moving zone: surface axial velocity above this fraction of its maximum");
+  sp.dispersion_spacing = samp.number("dispersion_spacing", sp.dispersion_spacing, Range::closed(0.0, 1.0), "s",
+                                      "time between the dispersion's position samples (0 = one feeder batch)");
+  sp.dispersion_lags = static_cast<int>(samp.integer("dispersion_lags", sp.dispersion_lags, 2, 1000,
+                                                     "the fine series' longest lag, in sample spacings (docs/film_sampling.md)"));
   samp.finish();
 
   root.finish();

@@ -87,16 +87,46 @@ void write_film(H5File& f, const dem::scene::FilmFields& ff) {
   write_profiles(f, "/film/axial_velocity", ff.velocity_profiles, "m/s");
   write_profiles(f, "/film/solid_fraction", ff.solid_fraction, "1");
   f.set_attribute("/film/solid_fraction_mean", "rows", "0 = stationary zone, 1 = moving zone");
-  std::vector<double> dc, ds, dd;
+  // Dispersion: D from the slope of the MSD (docs/film_sampling.md "Wall-normal dispersion"),
+  // with the lags and the axial window it used.
+  std::vector<double> dc, ds, dd, lo, hi, tx, msd, msd_n;
   for (const auto& b : ff.dispersion) {
     dc.push_back(b.coefficient);
     ds.push_back(b.coefficient_std);
     dd.push_back(b.drift);
+    lo.push_back(b.fit_lag_min);
+    hi.push_back(b.fit_lag_max);
+    tx.push_back(b.crossing_time);
+    msd.insert(msd.end(), b.msd.begin(), b.msd.end());
+    for (std::size_t n : b.msd_samples) msd_n.push_back(static_cast<double>(n));
   }
   f.write("/film/dispersion", dc, "m2/s");
   f.write("/film/dispersion_std", ds, "m2/s");
   f.write("/film/dispersion_drift", dd, "m/s");
-  f.set_attribute("/film/dispersion", "lag_s", ff.dispersion_lag);
+  f.write("/film/dispersion_fit_lag_min", lo, "s");
+  f.write("/film/dispersion_fit_lag_max", hi, "s");
+  f.write("/film/dispersion_crossing_time", tx, "s");
+  f.write("/film/dispersion_lags", ff.dispersion_lags, "s");
+  const std::size_t nlag = ff.dispersion_lags.size();
+  if (!ff.dispersion.empty() && nlag > 0 && msd.size() == ff.dispersion.size() * nlag) {
+    f.write("/film/dispersion_msd", msd, {ff.dispersion.size(), nlag}, "m2");
+    f.write("/film/dispersion_msd_samples", msd_n, {ff.dispersion.size(), nlag}, "1");
+    for (const char* name : {"dispersion_msd", "dispersion_msd_samples"}) {
+      f.attach_scale(std::string("/film/") + name, 0, "/film/wall_distance_d", "wall distance");
+      f.attach_scale(std::string("/film/") + name, 1, "/film/dispersion_lags", "lag");
+    }
+  }
+  f.set_attribute("/film/dispersion", "method",
+                  "wall-normal self-diffusion: half the slope of MSD(lag) = 2 D lag + c (variance of the radial "
+                  "displacement, drift removed) by starting wall-distance bin, fitted over the lags from "
+                  "dispersion_fit_lag_min to dispersion_fit_lag_max (<= crossing_fraction x the bin-crossing time "
+                  "w^2/(2D), at least two lags); std = spread over turns of the per-turn fits");
+  f.set_attribute("/film/dispersion", "z_min_m", ff.dispersion_z_min);
+  f.set_attribute("/film/dispersion", "z_max_m", ff.dispersion_z_max);
+  f.set_attribute("/film/dispersion", "crossing_fraction", ff.dispersion_crossing_fraction);
+  f.set_attribute("/film/dispersion_lags", "series",
+                  "the fine series (position samples inside each snapshot interval, dem.sampling.dispersion_spacing "
+                  "apart) then the coarse series (the snapshots, within a turn); 0 = a series without data");
   f.write("/film/ring_z", ff.ring_z, "m");
   write_profiles(f, "/film/ring_solid_fraction", ff.ring_solid_fraction, "1");
   write_profiles(f, "/film/ring_volume_flux", ff.ring_volume_flux, "m/s");
@@ -107,7 +137,8 @@ void write_film(H5File& f, const dem::scene::FilmFields& ff) {
     f.attach_scale(std::string("/film/") + name, 0, "/film/section_z", "z");
   for (const char* name : {"surface_axial_velocity", "moving_zone_of_bin"})
     f.attach_scale(std::string("/film/") + name, 0, "/film/bin_theta", "theta");
-  for (const char* name : {"dispersion", "dispersion_std", "dispersion_drift"})
+  for (const char* name : {"dispersion", "dispersion_std", "dispersion_drift", "dispersion_fit_lag_min",
+                           "dispersion_fit_lag_max", "dispersion_crossing_time"})
     f.attach_scale(std::string("/film/") + name, 0, "/film/wall_distance_d", "wall distance");
   for (const char* name : {"axial_velocity_mean", "axial_velocity_std", "axial_velocity_turns"}) {
     f.attach_scale(std::string("/film/") + name, 0, "/film/arc_theta", "arc theta");

@@ -174,10 +174,11 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   const int stride = io::snapshot_stride(turns * per_turn, static_cast<double>(sim.size()));
   int taken = sampled * per_turn + in_turn;  // sampled snapshots so far, counted from the start of sampling
   // One turn as SceneSampler::sample_turns does it (from the snapshot a resumed run stopped
-  // at), keeping every stride-th snapshot; between snapshots, a fixed point as in the spin-up.
+  // at; each interval with the dispersion's burst of position samples), keeping every
+  // stride-th snapshot; between snapshots, a fixed point as in the spin-up.
   auto sample_turn = [&] {
     for (; in_turn < per_turn;) {
-      advance([&] { scene.advance(period / per_turn); });
+      advance([&] { sampler.advance_interval(scene); });
       dem::scene::SnapshotArrays s = dem::scene::take_snapshot(sim);
       if (++taken % stride == 0) keep(s, true);
       sampler.add_snapshot(std::move(s));

@@ -1,7 +1,10 @@
 #include "dem/scene/scene_sampler.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
+
+#include "dem/film/developed_film.hpp"
 
 namespace centrec::dem::scene {
 
@@ -56,11 +59,20 @@ SceneSampler::SceneSampler(const SceneConfig& c, const SamplingSpec& spec) : spe
   std::iota(sc.zone_of_bin.begin(), sc.zone_of_bin.end(), 0);
   sc.z_max = length;
   if (!slice) {  // away from the feeder and the outlet
-    sc.z_min = 0.2 * length;
-    sc.z_max = 0.8 * length;
+    sc.z_min = film::kDevelopedFrom * length;
+    sc.z_max = film::kDevelopedTo * length;
   }
   solid_ = std::make_unique<film::SolidFractionSampler>(frame_, sc);
-  dispersion_ = std::make_unique<film::DispersionEstimator>(frame_, bins);
+
+  film::DispersionConfig dc;
+  dc.bins = bins;
+  dc.fine_lags = spec.dispersion_lags;
+  dc.coarse_lags = spec.snapshots_per_turn - 1;
+  if (!slice) {  // the developed film only; a slice is developed everywhere
+    dc.z_min = film::kDevelopedFrom * length;
+    dc.z_max = film::kDevelopedTo * length;
+  }
+  dispersion_ = std::make_unique<film::DispersionEstimator>(frame_, dc);
 
   film::RingProfileConfig rc;
   rc.bins = bins;
@@ -75,18 +87,35 @@ void SceneSampler::add_snapshot(SnapshotArrays s) {
   velocity_->add_snapshot(p);
   solid_->add_snapshot(p);
   ring_->add_snapshot(p);
-  if (previous_) dispersion_->add_pair(previous_->view(), p);
-  previous_ = std::move(s);
+  dispersion_->add_sample(p, film::DispersionSeries::coarse);
   ++snapshots_;
 }
 
+void SceneSampler::advance_interval(CentrecScene& scene) {
+  // The same step count as scene.advance(turn period / snapshots_per_turn).
+  const double dt = scene.simulation().dt();
+  const double interval = scene.turn_period() / spec_.snapshots_per_turn;
+  const std::int64_t steps = std::llround(interval / dt), batch = scene.steps_per_batch();
+  // Samples at whole batches from the interval's start: advance() then makes the batches it
+  // would have made in one call (the feeder, the outlet and the controller act per batch).
+  const std::int64_t stride =
+      batch * std::max<std::int64_t>(1, std::llround(spec_.dispersion_spacing / (static_cast<double>(batch) * dt)));
+  std::int64_t done = 0;
+  dispersion_->add_sample(take_snapshot(scene.simulation()).view());
+  while (done + stride <= steps) {
+    scene.advance(static_cast<double>(stride) * dt);
+    done += stride;
+    dispersion_->add_sample(take_snapshot(scene.simulation()).view());
+  }
+  if (done < steps) scene.advance(static_cast<double>(steps - done) * dt);
+  dispersion_->end_burst();
+}
+
 void SceneSampler::sample_turns(CentrecScene& scene, double turns) {
-  const double period = scene.turn_period();
-  const double interval = period / spec_.snapshots_per_turn;
   const int whole = static_cast<int>(std::floor(turns + 1e-9));
   for (int t = 0; t < whole; ++t) {
     for (int k = 0; k < spec_.snapshots_per_turn; ++k) {
-      scene.advance(interval);
+      advance_interval(scene);
       add_snapshot(take_snapshot(scene.simulation()));
     }
     end_turn();
@@ -97,6 +126,8 @@ void SceneSampler::end_turn() {
   velocity_->end_period();
   solid_->end_period();
   ring_->end_period();
+  dispersion_->end_period();
+  dispersion_->end_burst(film::DispersionSeries::coarse);
   ++turns_;
 }
 
@@ -148,7 +179,10 @@ FilmFields SceneSampler::fields() const {
     }
   }
   f.dispersion = dispersion_->result();
-  f.dispersion_lag = dispersion_->lag();
+  f.dispersion_lags = dispersion_->lags();
+  f.dispersion_z_min = std::max(0.0, dispersion_->config().z_min);
+  f.dispersion_z_max = std::min(frame_.length, dispersion_->config().z_max);
+  f.dispersion_crossing_fraction = dispersion_->config().crossing_fraction;
   for (int a = 0; a < ring_->config().sections; ++a) {
     f.ring_z.push_back(ring_->section_centre(a));
     f.ring_solid_fraction.push_back(ring_->solid_fraction(a));
@@ -166,14 +200,6 @@ std::vector<double> SceneSampler::save() const {
   solid_->save(out);
   dispersion_->save(out);
   ring_->save(out);
-  out.put(previous_ ? 1.0 : 0.0);
-  if (previous_) {
-    out.put(previous_->time);
-    for (const auto* c : {&previous_->x, &previous_->y, &previous_->z, &previous_->vx, &previous_->vy, &previous_->vz,
-                          &previous_->radius})
-      out.put_all(*c);
-    out.put_all(previous_->id);
-  }
   return out.data;
 }
 
@@ -186,14 +212,6 @@ void SceneSampler::load(const std::vector<double>& state) {
   solid_->load(in);
   dispersion_->load(in);
   ring_->load(in);
-  previous_.reset();
-  if (in.get() != 0.0) {
-    SnapshotArrays s;
-    s.time = in.get();
-    for (auto* c : {&s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.radius}) in.get_all(*c);
-    in.get_all(s.id);
-    previous_ = std::move(s);
-  }
   in.finish();
 }
 
