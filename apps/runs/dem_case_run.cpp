@@ -145,16 +145,21 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     }
     bool told = false;
     for (auto st = steadiness(); sim.time() < cap - 0.5 * sim.dt() && !st.steady; st = steadiness()) {
-      if (!told)
+      if (!told) {
         std::fprintf(stderr, "  not steady at t = %.4g s (%s): spin-up extended, up to t = %.4g s\n", sim.time(),
                      st.describe().c_str(), cap);
+        progress.set_total(cap + dc.sampling.turns * period, sim.time());
+      }
       told = true;
       advance([&] { scene.advance(std::min(chunk, cap - sim.time())); });
       sim.rebuild_lists();
       checkpoint("spin-up", false);
       stop_if_interrupted("spin-up");
     }
-    if (told) std::fprintf(stderr, "  spin-up ended at t = %.4g s: %s\n", sim.time(), steadiness().describe().c_str());
+    if (told) {
+      std::fprintf(stderr, "  spin-up ended at t = %.4g s: %s\n", sim.time(), steadiness().describe().c_str());
+      progress.set_total(sim.time() + dc.sampling.turns * period, sim.time());
+    }
   }
   // Every snapshot the samplers see is kept for dem.h5 and dem.xmf, with the glued layer
   // (a resumed run keeps those after its checkpoint and the start snapshot, without glued).

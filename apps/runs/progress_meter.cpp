@@ -50,6 +50,12 @@ void ProgressMeter::update(double done, double turns, double particle_steps, boo
   line_open_ = tty_;
 }
 
+void ProgressMeter::set_total(double total, double done) {
+  total_ = total;
+  const double frac = total_ > 0.0 ? std::min(1.0, done / total_) : 1.0;
+  next_decile_ = static_cast<int>(std::floor(frac * 10.0 + 1e-9)) + 1;
+}
+
 void ProgressMeter::finish() {
   if (line_open_) std::fprintf(stderr, "\n");
   line_open_ = false;

@@ -20,6 +20,9 @@ class ProgressMeter {
   // called only when a line is printed.
   void update(double done, double turns, double particle_steps, bool force = false,
               const std::function<std::string()>& status = {});
+  // The run got longer (a spin-up extended until steady): percentages and ETA from `total`,
+  // with `done` reached so far.
+  void set_total(double total, double done);
   void finish();
   double elapsed() const;
 

@@ -139,7 +139,8 @@ TEST(CaseRefusals, TheDemOfAReceiverCaseIsTheDerivedDrum) {
   // `centrec dem` and `centrec run` simulate the drum receiver.dem_diameter_d derives.
   const config::CaseFile cf = config::read_case_file(CENTREC_SOURCE_DIR "/cases/receiver_1m.yaml");
   const config::DemCase d = config::effective_dem(*cf.dem, &*cf.receiver, {});
-  EXPECT_NEAR(d.scene.drum.diameter, 21 * d.scene.particle.diameter, 1e-12);
+  EXPECT_NEAR(d.scene.drum.diameter, cf.receiver->dem_diameter_d * d.scene.particle.diameter, 1e-12);
+  EXPECT_EQ(cf.receiver->dem_diameter_d, 80.0);  // the case derives its DEM at the validity threshold
   EXPECT_NE(d.scene.drum.diameter, cf.dem->scene.drum.diameter);
 }
 

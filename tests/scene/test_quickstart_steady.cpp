@@ -1,42 +1,33 @@
-// Slow: the README's quickstart drum reaches the cold steady state, i.e. its outlet
-// mass flow converges to the inlet mass flow. Runs the case file itself.
+// Slow: the README's quickstart reaches steady flow. Its DEM is a periodic slice of D12
+// scaled to D/d 80 whose holdup controller holds the flow the receiver derives (eq 2,
+// 28.56 g/s); run over the longest spin-up the case allows (run.duration + the extension
+// cap) and its sampled turns, the flow over the last run.flow_window_turns turns is within
+// 8 % of that target (one turn's flow in this slice scatters by about +-13 %, a six-turn
+// window's mean by about +-5 %: docs/retention_dd80.md). Runs the case file itself.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "config/case_checks.hpp"
 #include "config/case_file.hpp"
-#include "dem/film/steady_state.hpp"
 #include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/mass_flow_window.hpp"
 
 using namespace centrec;
 
-TEST(QuickstartSteadyState, OutletMassFlowConvergesToInlet) {
+TEST(QuickstartSteadyState, SliceFlowSettlesOnTheDerivedTarget) {
   const config::CaseFile cf = config::read_case_file(std::string(CENTREC_SOURCE_DIR) + "/cases/quickstart.yaml");
-  ASSERT_TRUE(cf.dem.has_value());
-  dem::scene::CentrecScene scene(cf.dem->scene);
-  const double duration = cf.dem->run.duration + 3.0 * scene.turn_period();
-  scene.advance(duration);
-  const auto& log = scene.mass_flow_log();
-  std::vector<double> t, in, out;
-  for (std::size_t k = 1; k < log.size(); ++k) {
-    const double h = log[k].time - log[k - 1].time;
-    t.push_back(log[k].time);
-    in.push_back((log[k].fed - log[k - 1].fed) / h);
-    out.push_back((log[k].out - log[k - 1].out) / h);
-  }
-  film::SteadyStateCriterion crit;
-  crit.window = 3.0 * scene.turn_period();
-  crit.tolerance = 0.08;
-  const auto ss = film::find_steady_state(t.data(), in.data(), out.data(), t.size(), crit);
-  // The last window's means, whatever the first steady window was.
-  const auto& last = log.back();
-  std::size_t k = log.size() - 1;
-  while (k > 0 && last.time - log[k].time < crit.window) --k;
-  const double w = last.time - log[k].time;
-  const double rin = (last.fed - log[k].fed) / w, rout = (last.out - log[k].out) / w;
-  std::printf("quickstart: steady %s at %.3f s; last %.3f s: inlet %.3f g/s, outlet %.3f g/s (%.1f %%), holdup %lld\n",
-              ss.steady ? "yes" : "no", ss.time, w, rin * 1e3, rout * 1e3, 100.0 * (rout / rin - 1.0),
-              static_cast<long long>(scene.free_particles()));
-  EXPECT_TRUE(ss.steady);
-  EXPECT_NEAR(rout / rin, 1.0, 0.10);
+  ASSERT_TRUE(cf.dem.has_value() && cf.receiver.has_value());
+  const config::DemCase dc = config::effective_dem(*cf.dem, &*cf.receiver, {});
+  ASSERT_TRUE(dc.scene.slice.enabled);
+  EXPECT_NEAR(dc.scene.slice.target_mass_flow, 0.0357 * 0.048 / 0.06, 1e-9);  // eq 2
+  dem::scene::CentrecScene scene(dc.scene);
+  const double period = scene.turn_period();
+  scene.advance(dc.run.duration + dc.run.extension_cap() + dc.sampling.turns * period);
+  const double window = dc.run.flow_window_turns * period;
+  const auto st = dem::scene::flow_steadiness(scene.mass_flow_log(), dc.scene, window, 0.08);
+  std::printf("quickstart slice after %.3f s: %s; %lld free particles\n", scene.simulation().time(),
+              st.describe().c_str(), static_cast<long long>(scene.free_particles()));
+  EXPECT_TRUE(st.steady);
+  EXPECT_NEAR(st.flow_error, 0.0, 0.08);
 }
