@@ -273,6 +273,10 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
   j["solver"]["steady"]["marched"] = r.steady.marched;
   j["solver"]["steady"]["march_time_s"] = r.steady.march_time;
   j["solver"]["steady"]["scaled_residual"] = r.steady.residual;
+  // The tolerance the residual was held to: thermal.solver.steady_tolerance, or the round-off
+  // floor's multiple where that is larger (thermal/steady_state.hpp, docs/thermal_model.md).
+  j["solver"]["steady"]["tolerance_applied"] = r.steady.tolerance;
+  j["solver"]["steady"]["residual_floor"] = r.steady.residual_floor;
   j["solver"]["steady"]["wall_time_s"] = r.steady_seconds;
   if (r.has_transient) {
     const auto& s = r.transient.samples;

@@ -7,10 +7,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "config/case_thermal.hpp"
@@ -114,6 +116,15 @@ TEST(ThermalCli, CommandWritesH5AndSummary) {
   const std::string text((std::istreambuf_iterator<char>(js)), std::istreambuf_iterator<char>());
   for (const char* key : {"\"T_out_K\"", "\"efficiency\"", "\"balance_residual\"", "\"k_eff\"", "\"jacobian_evaluations\""})
     EXPECT_NE(text.find(key), std::string::npos) << key;
+  // The steady tolerance the residual was held to: the default 1e-10, or 4 x the round-off
+  // floor where that is larger (thermal/steady_state.hpp).
+  const nlohmann::json steady = nlohmann::json::parse(text)["solver"]["steady"];
+  ASSERT_TRUE(steady.contains("tolerance_applied") && steady.contains("residual_floor")) << steady.dump();
+  const double tol = steady["tolerance_applied"], floor = steady["residual_floor"], res = steady["scaled_residual"];
+  std::printf("steady: residual %.3g, tolerance applied %.3g, round-off floor %.3g\n", res, tol, floor);
+  EXPECT_GT(floor, 0.0);
+  EXPECT_DOUBLE_EQ(tol, std::max(1e-10, 4.0 * floor));
+  EXPECT_LE(res, tol);
   std::filesystem::remove_all(dir);
 }
 
