@@ -9,11 +9,13 @@
 #include <vector>
 
 #include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/feeder.hpp"
 #include "dem/scene/mass_flow_window.hpp"
 #include "dem/scene/scene_sampler.hpp"
 #include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
 #include "config/case_checks.hpp"
+#include "config/strict_yaml.hpp"
 #include "runs/dem_run_report.hpp"
 #include "runs/interrupt.hpp"
 #include "runs/progress_meter.hpp"
@@ -137,8 +139,16 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     std::snprintf(what, sizeof what, "the drum runs to t = %.4g s (dem.run.duration) so the film fills and its outflow settles",
                   dc.run.duration);
     progress.phase("spin-up", what);
+    // An underfed drum never reaches the state asked: stop after its first turn, not hours later.
+    const bool fed = dc.scene.feeder.enabled && !slice && dc.scene.feeder.mass_flow > 0.0;
+    bool feeder_checked = !fed || sim.time() >= period;
     while (sim.time() < dc.run.duration - 0.5 * sim.dt()) {
       advance([&] { scene.advance(std::min(chunk, dc.run.duration - sim.time())); });
+      if (!feeder_checked && sim.time() >= period) {
+        feeder_checked = true;
+        const std::string why = dem::scene::feeder_shortfall(dc.scene, scene.feeder_stats(), sim.time());
+        if (!why.empty()) throw config::ConfigError(cf.path + ": " + why);
+      }
       sim.rebuild_lists();
       checkpoint("spin-up", false);
       stop_if_interrupted("spin-up");

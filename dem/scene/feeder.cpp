@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "dem/scene/rng_state.hpp"
@@ -107,6 +108,22 @@ double Feeder::feed(Simulation& sim, double elapsed) {
     next_diameter_ = sizes_.next_diameter();
   }
   return inserted;
+}
+
+std::string feeder_shortfall(const SceneConfig& config, const FeederStats& stats, double elapsed) {
+  if (stats.requested_mass <= 0.0 || stats.deferred == 0 || stats.inserted_mass >= 0.9 * stats.requested_mass)
+    return {};
+  const double d = config.particle.diameter;
+  char b[512];
+  std::snprintf(b, sizeof b,
+                "the feeder delivered %.4g g/s of the %.4g g/s asked over the first %.3g s (%lld insertions "
+                "deferred: its region is full; its particles leave it at the wall's speed, so it carries about "
+                "its radial x axial cross-section times that speed): enlarge dem.feeder.radial_height_d "
+                "(now %.3g) and dem.feeder.axial_length_d (now %.3g), or lower the mass flow",
+                stats.inserted_mass / elapsed * 1e3, config.feeder.mass_flow * 1e3, elapsed,
+                static_cast<long long>(stats.deferred), config.feeder.radial_height / d,
+                config.feeder.axial_length / d);
+  return b;
 }
 
 }  // namespace centrec::dem::scene

@@ -19,6 +19,15 @@ struct FeederStats {
   double requested_mass = 0.0;       // kg the target rate asked for so far
 };
 
+// Whether the feeder keeps up with its mass flow, judged once `stats` cover at least one drum
+// turn: empty if it does; otherwise the reason, with the rate delivered and the keys that
+// widen the region. Fed particles leave the region at the wall's speed, so its throughput is
+// about its radial x axial cross-section times that speed: a region sized in d for a small
+// drum (the defaults) cannot carry the paper's flows at D/d 80-100 (docs/centrec_scene.md).
+// A region that is full defers insertions and keeps the backlog, so the shortfall is
+// cumulative: below 90 % of the mass asked with deferred insertions, the drum is underfed.
+std::string feeder_shortfall(const SceneConfig& config, const FeederStats& stats, double elapsed);
+
 // Everything the feeder carries from one batch to the next (checkpoints).
 struct FeederState {
   std::string size_rng, place_rng;  // generator states (std::mt19937_64 stream format)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "dem/scene/centrec_scene.hpp"
 
@@ -36,6 +37,34 @@ TEST(Feeder, RateWithinTwoPercentOfTarget) {
                 100.0 * (rate / c.feeder.mass_flow - 1.0), static_cast<long long>(s.feeder_stats().inserted),
                 static_cast<long long>(s.feeder_stats().deferred));
     EXPECT_NEAR(rate / c.feeder.mass_flow, 1.0, 0.02);
+  }
+}
+
+// A region too small for its flow defers insertions; after one turn the run is told why,
+// with the rate delivered and the keys to change. The same drum with the default region
+// keeps up (no message).
+TEST(Feeder, ShortfallAfterOneTurnNamesTheRegionKeys) {
+  for (bool small : {false, true}) {
+    SceneConfig c = small_drum();
+    if (small) {
+      c.feeder.radial_height = 1.05 * c.particle.diameter;  // centres within 0.05 d radially
+      c.feeder.axial_length = 1.05 * c.particle.diameter;
+    }
+    CentrecScene s(c);
+    const double turn = 2.0 * M_PI / c.drum.omega;
+    s.advance(turn);
+    const std::string why = feeder_shortfall(c, s.feeder_stats(), turn);
+    const double rate = s.feeder_stats().inserted_mass / turn;
+    std::printf("region %s: %.3f of %.3f g/s delivered over one turn, %lld deferred: \"%s\"\n",
+                small ? "1.05 d x 1.05 d" : "default", rate * 1e3, c.feeder.mass_flow * 1e3,
+                static_cast<long long>(s.feeder_stats().deferred), why.c_str());
+    if (small) {
+      EXPECT_LT(rate, 0.9 * c.feeder.mass_flow);
+      EXPECT_NE(why.find("radial_height_d"), std::string::npos);
+      EXPECT_NE(why.find("axial_length_d"), std::string::npos);
+    } else {
+      EXPECT_TRUE(why.empty()) << why;
+    }
   }
 }
 
