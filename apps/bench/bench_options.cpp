@@ -11,8 +11,8 @@ namespace centrec::bench {
 namespace {
 
 const char* kDescription =
-    "centrec_bench_film: DEM speed of centrec vs LIGGGHTS 3.8 on a settled particle film in the\n"
-    "D12 drum. Both engines start from the same lattice file, settle, then run\n"
+    "centrec_bench_film: DEM speed of centrec vs LIGGGHTS 3.8 and LAMMPS on a settled particle film\n"
+    "in the D12 drum. All engines start from the same lattice file, settle, then run\n"
     "timed phases; the median phase gives particle-steps/s.";
 
 // Numbers are read as positive reals ("1e4" is a size too) and rounded down where the
@@ -60,7 +60,7 @@ BenchOptions parse_bench_options(int argc, char** argv) {
     app.add_option(name, v, what)->check(cli::positive_number())->type_name("X");
   };
   list("--sizes", sizes, "target particle counts (default 10000,50000,200000)");
-  list("--threads", threads, "centrec OpenMP threads = LIGGGHTS MPI ranks (default 1,2)");
+  list("--threads", threads, "centrec OpenMP threads = LIGGGHTS / LAMMPS MPI ranks (default 1,2)");
   number("--steps", steps, "steps per timed phase (default 1000)");
   number("--phase-particle-steps", o.phase_particle_steps,
          "every size's timed phase does P particle-steps: steps = round(P / N), overrides --steps "
@@ -72,17 +72,21 @@ BenchOptions parse_bench_options(int argc, char** argv) {
   number("--settle", settle, "untimed settle steps before timing (default 2000)");
   number("--repeats", repeats, "timed phases per run; the median is reported (default 3)");
   list("--repeats-per-size", repeats_per_size, "one repeat count per size (overrides --repeats)");
-  bool no_liggghts = false, no_centrec = false;
-  app.add_flag("--no-liggghts", no_liggghts, "time centrec only");
-  app.add_flag("--no-centrec", no_centrec, "time LIGGGHTS only");
+  bool no_liggghts = false, no_lammps = false, no_centrec = false;
+  app.add_flag("--no-liggghts", no_liggghts, "do not time LIGGGHTS");
+  app.add_flag("--no-lammps", no_lammps, "do not time LAMMPS");
+  app.add_flag("--no-centrec", no_centrec, "do not time centrec (peer engines only)");
   app.add_flag("--interleave", o.interleave,
                "centrec: settle every size first, then alternate the sizes' timed phases (phase k of each size "
                "in turn), so a slow spell of the machine hits all sizes and does not skew the cost per particle "
-               "between them (LIGGGHTS runs stay one after the other)");
+               "between them (LIGGGHTS and LAMMPS runs stay one after the other)");
   number("--liggghts-skin", o.liggghts_skin_d, "LIGGGHTS neighbour skin in diameters (default 0.4)");
+  number("--lammps-skin", o.lammps_skin_d, "LAMMPS neighbour skin in diameters (default 0.4)");
   number("--centrec-skin", o.centrec_skin_d, "centrec Verlet skin in diameters (default 0.4)");
   number("--stl-facets", facets, "facets around the LIGGGHTS cylinder mesh (default 720)");
   app.add_option("--liggghts", o.liggghts_exe, "LIGGGHTS executable (default liggghts)")->type_name("EXE");
+  app.add_option("--lammps", o.lammps_exe, "LAMMPS executable with the GRANULAR package (default lmp)")
+      ->type_name("EXE");
   app.add_option("--mpirun", o.mpirun, "MPI launcher (default mpirun)")->type_name("EXE");
   app.add_option("--out", o.out, "output folder: results.csv, results.md, inputs, logs (default bench-film)")
       ->type_name("DIR");
@@ -101,13 +105,15 @@ BenchOptions parse_bench_options(int argc, char** argv) {
   o.repeats_per_size = whole<int>(repeats_per_size);
   o.stl_facets = static_cast<int>(facets);
   o.liggghts = !no_liggghts;
+  o.lammps = !no_lammps;
   o.centrec = !no_centrec;
   if (!o.repeats_per_size.empty() && o.repeats_per_size.size() != o.sizes.size())
     throw std::invalid_argument("--repeats-per-size needs one value per size");
   if (o.replay_particle_steps > 0 && o.phase_particle_steps > 0)
     throw std::invalid_argument("--replay-particle-steps and --phase-particle-steps exclude each other (same window "
                                 "for every size, or same work per phase)");
-  if (!o.liggghts && !o.centrec) throw std::invalid_argument("--no-liggghts and --no-centrec: nothing to run");
+  if (!o.liggghts && !o.lammps && !o.centrec)
+    throw std::invalid_argument("--no-liggghts, --no-lammps and --no-centrec: nothing to run");
   return o;
 }
 

@@ -7,7 +7,7 @@ namespace centrec::bench {
 
 struct BenchOptions {
   std::vector<long> sizes{10000, 50000, 200000};  // target N (rounded to whole lattice rows)
-  std::vector<int> threads{1, 2};                 // centrec threads = LIGGGHTS ranks
+  std::vector<int> threads{1, 2};                 // centrec threads = LIGGGHTS / LAMMPS ranks
   long steps = 1000;                              // per timed phase
   // When > 0: every size's timed phase is this many particle-steps (steps = round(P / N),
   // overrides steps), so the small film's phases last as long as the large one's and a
@@ -21,13 +21,16 @@ struct BenchOptions {
   int repeats = 3;
   std::vector<int> repeats_per_size;             // optional, overrides repeats per size
   bool liggghts = true;
+  bool lammps = true;
   bool centrec = true;
   bool interleave = false;                        // centrec: alternate the sizes' timed phases
   double liggghts_skin_d = 0.4;                   // neighbour skin / d
+  double lammps_skin_d = 0.4;
   double centrec_skin_d = 0.4;
   int stl_facets = 720;                           // facets around the cylinder
   std::string out = "bench-film";
   std::string liggghts_exe = "liggghts";
+  std::string lammps_exe = "lmp";
   std::string mpirun = "mpirun";
 };
 

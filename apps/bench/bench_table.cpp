@@ -40,6 +40,8 @@ std::string spread(const EngineResult& r) {
   return fmt("%.3f", lo) + "-" + fmt("%.3f", hi);
 }
 
+std::vector<const EngineResult*> engines(const BenchRow& row) { return {&row.centrec, &row.liggghts, &row.lammps}; }
+
 void state_row(std::string& md, const FilmCase& fc, const BenchRow& row, const EngineResult& r, const char* when,
                const FilmSummary& s) {
   if (!r.ok && s.atoms == 0) return;
@@ -58,26 +60,39 @@ std::string format_markdown(const FilmCase& fc, const std::vector<BenchRow>& row
   const auto first = first_rows(rows);
   std::string md = preamble;
   md +=
-      "\n| N | threads/ranks | centrec p-steps/s | LIGGGHTS p-steps/s | ratio | centrec /core | LIGGGHTS /core "
-      "| contacts/particle centrec | contacts/particle LIGGGHTS | wall contacts/particle c / L "
-      "| bytes/particle centrec | bytes/particle LIGGGHTS | cost/particle vs smallest N c / L "
-      "| timed phase s, min-max c / L | list pairs/particle c / L | rebuilds/phase c / L |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "\n| N | threads/ranks | centrec p-steps/s | LIGGGHTS p-steps/s | LAMMPS p-steps/s | centrec / LIGGGHTS "
+      "| centrec / LAMMPS | per core c / L / M | contacts/particle c / L / M | wall contacts/particle c / L / M "
+      "| bytes/particle c / L / M | cost/particle vs smallest N c / L / M | timed phase s, min-max c / L / M "
+      "| list pairs/particle c / L / M | rebuilds/phase c / L / M |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
-    const auto& c = row.centrec;
-    const auto& l = row.liggghts;
-    const double pc = c.particle_steps_per_second(), pl = l.particle_steps_per_second();
     const BenchRow& base = *first.at(row.workers);
-    md += "| " + std::to_string(row.particles) + " | " + std::to_string(row.workers) + " | " + sci(c, pc) + " | " +
-          sci(l, pl) + " | " + (c.ok && l.ok && pl > 0 ? fmt("%.2f", pc / pl) : "-") + " | " +
-          sci(c, pc / row.workers) + " | " + sci(l, pl / row.workers) + " | " + fix2(c, contacts_per_particle(c)) +
-          " | " + fix2(l, contacts_per_particle(l)) + " | " + fix2(c, wall_per_particle(c)) + " / " +
-          fix2(l, wall_per_particle(l)) + " | " +
-          (c.ok ? fmt("%.0f", c.bytes_per_particle) : "-") +
-          " | " + (l.ok ? fmt("%.0f", l.bytes_per_particle) : "-") + " | " + relative_cost(c, base.centrec) + " / " +
-          relative_cost(l, base.liggghts) + " | " + spread(c) + " / " + spread(l) + " | " +
-          fix2(c, c.list_pairs_per_particle) + " / " + fix2(l, l.list_pairs_per_particle) + " | " +
-          fix2(c, c.rebuilds_per_phase) + " / " + fix2(l, l.rebuilds_per_phase) + " |\n";
+    const EngineResult* e[3] = {&row.centrec, &row.liggghts, &row.lammps};
+    const EngineResult* b[3] = {&base.centrec, &base.liggghts, &base.lammps};
+    // "c / L / M" of one quantity.
+    auto each = [&](auto cell) {
+      std::string s;
+      for (int k = 0; k < 3; ++k) s += (k ? " / " : "") + cell(*e[k], *b[k]);
+      return s;
+    };
+    auto ratio = [&](const EngineResult& peer) {
+      const double pc = row.centrec.particle_steps_per_second(), pp = peer.particle_steps_per_second();
+      return row.centrec.ok && peer.ok && pp > 0 ? fmt("%.2f", pc / pp) : std::string("-");
+    };
+    md += "| " + std::to_string(row.particles) + " | " + std::to_string(row.workers) + " | " +
+          sci(row.centrec, row.centrec.particle_steps_per_second()) + " | " +
+          sci(row.liggghts, row.liggghts.particle_steps_per_second()) + " | " +
+          sci(row.lammps, row.lammps.particle_steps_per_second()) + " | " + ratio(row.liggghts) + " | " +
+          ratio(row.lammps) + " | " +
+          each([&](const EngineResult& r, const EngineResult&) { return sci(r, r.particle_steps_per_second() / row.workers); }) +
+          " | " + each([](const EngineResult& r, const EngineResult&) { return fix2(r, contacts_per_particle(r)); }) +
+          " | " + each([](const EngineResult& r, const EngineResult&) { return fix2(r, wall_per_particle(r)); }) +
+          " | " +
+          each([](const EngineResult& r, const EngineResult&) { return r.ok ? fmt("%.0f", r.bytes_per_particle) : "-"; }) +
+          " | " + each([](const EngineResult& r, const EngineResult& b) { return relative_cost(r, b); }) + " | " +
+          each([](const EngineResult& r, const EngineResult&) { return spread(r); }) + " | " +
+          each([](const EngineResult& r, const EngineResult&) { return fix2(r, r.list_pairs_per_particle); }) + " | " +
+          each([](const EngineResult& r, const EngineResult&) { return fix2(r, r.rebuilds_per_phase); }) + " |\n";
   }
   md +=
       "\nFilm state reached by each engine (same initial file; contacts per particle = 2 x overlapping pairs / N; "
@@ -87,14 +102,14 @@ std::string format_markdown(const FilmCase& fc, const std::vector<BenchRow>& row
       "| thickness d | deepest wall overlap um | mean vz m/s | contacts/particle | wall/particle |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
-    for (const EngineResult* r : {&row.centrec, &row.liggghts}) {
+    for (const EngineResult* r : engines(row)) {
       state_row(md, fc, row, *r, "settled", r->settled);
       state_row(md, fc, row, *r, "final", r->final);
     }
   }
   std::string notes;
   for (const auto& row : rows)
-    for (const EngineResult* r : {&row.centrec, &row.liggghts})
+    for (const EngineResult* r : engines(row))
       if (!r->note.empty()) notes += "- N " + std::to_string(row.particles) + ", " + std::to_string(row.workers) +
                                      " workers: " + r->note + "\n";
   if (!notes.empty()) md += "\nProblems:\n" + notes;
@@ -109,7 +124,7 @@ void write_csv(const std::string& path, const std::vector<BenchRow>& rows) {
                "wall_contacts_per_particle,bytes_per_particle,rss_bytes_per_particle,list_pairs_per_particle,"
                "rebuilds_per_phase,final_ke,final_mean_speed,final_mean_omega_z,ok,seconds\n");
   for (const auto& row : rows)
-    for (const EngineResult* r : {&row.centrec, &row.liggghts}) {
+    for (const EngineResult* r : engines(row)) {
       if (r->engine.empty()) continue;
       std::string secs;
       for (double s : r->seconds) secs += (secs.empty() ? "" : ";") + fmt("%.6f", s);

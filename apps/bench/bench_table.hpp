@@ -8,14 +8,14 @@
 
 namespace centrec::bench {
 
-// One (N, workers) point; either engine may be missing (ok = false, e.g. --no-liggghts).
+// One (N, workers) point; any engine may be missing (ok = false, e.g. --no-liggghts).
 struct BenchRow {
   long particles = 0;
   int workers = 1;
-  EngineResult centrec, liggghts;
+  EngineResult centrec, liggghts, lammps;
 };
 
-// Markdown: the speed table, then the film state each engine reached (to show both
+// Markdown: the speed table, then the film state each engine reached (to show all
 // advanced the same system). Cost per particle is relative to the smallest N at the same
 // worker count.
 std::string format_markdown(const FilmCase& fc, const std::vector<BenchRow>& rows, const std::string& preamble);

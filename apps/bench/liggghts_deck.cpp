@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "bench/deck_state_report.hpp"
 #include "io/atomic_write.hpp"
 #include "liggghts/liggghts_data_file.hpp"
 #include "liggghts/liggghts_materials.hpp"
@@ -76,48 +77,17 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
                "thermo 0\n");
   // State report used after settling and after the timed runs: the same quantities the
   // benchmark computes for centrec (film_summary), to show both advanced the same system.
-  // Wall contacts are counted geometrically (centre within R - d/2 of the axis) because
-  // LIGGGHTS PUBLIC keeps no per-atom wall contact count.
-  const double wall_r = c.drum_radius - 0.5 * s.diameter;
-  std::fprintf(f,
-               "variable vabs atom sqrt(vx*vx+vy*vy+vz*vz)\n"
-               "variable omz atom (x*vy-y*vx)/(x*x+y*y)\n"
-               "variable rad atom sqrt(x*x+y*y)\n"
-               "variable onwall atom v_rad>%.17g\n"
-               "variable vzat atom vz\n"
-               "compute rke all erotate/sphere\n"
-               "compute cn all contact/atom\n"
-               "compute cnsum all reduce sum c_cn\n"
-               "compute vabs all reduce ave v_vabs\n"
-               "compute omz all reduce ave v_omz\n"
-               "compute rmin all reduce min v_rad\n"
-               "compute rmax all reduce max v_rad\n"
-               "compute nwall all reduce sum v_onwall\n"
-               "compute vz all reduce ave v_vzat\n",
-               wall_r);
+  std::fputs(state_report_definitions(c.drum_radius - 0.5 * s.diameter).c_str(), f);
   // The report is a zero-step run (computes need a current timestep) followed by print.
-  std::fprintf(f,
-               "variable s_atoms equal atoms\n"
-               "variable s_ke equal ke\n"
-               "variable s_rke equal c_rke\n"
-               "variable s_vabs equal c_vabs\n"
-               "variable s_omz equal c_omz\n"
-               "variable s_rmin equal c_rmin\n"
-               "variable s_rmax equal c_rmax\n"
-               "variable s_vz equal c_vz\n"
-               "variable s_pairs equal c_cnsum/2\n"
-               "variable s_wall equal c_nwall\n");
   auto report = [&](const char* tag) {
     std::fprintf(f,
                  "print \"BENCH_PHASE report\"\n"
-                 "thermo_style custom step atoms ke c_rke c_vabs c_omz c_rmin c_rmax c_vz c_cnsum c_nwall\n"
+                 "thermo_style custom %s\n"
                  "run 0\n"
-                 "print \"BENCH_STATE %s atoms ${s_atoms} ke ${s_ke} rke ${s_rke} mean_speed ${s_vabs} "
-                 "mean_omega_z ${s_omz} min_r ${s_rmin} max_r ${s_rmax} mean_vz ${s_vz} pair_contacts ${s_pairs} wall_contacts "
-                 "${s_wall}\"\n"
+                 "%s"
                  "thermo_style custom step atoms ke\n"
                  "thermo_modify lost error norm no\n",
-                 tag);
+                 state_thermo_columns(), state_print_command(tag).c_str());
   };
   std::fprintf(f, "print \"BENCH_PHASE settle\"\nrun %ld\n", k.settle_steps);
   report("settled");

@@ -11,6 +11,9 @@
 namespace centrec::bench {
 namespace {
 
+const char* const kLammpsMemory = "Per MPI rank memory allocation (min/avg/max) = ";
+const char* const kOutputRow = "Output  |";
+
 bool starts_with(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
 
 // "BENCH_STATE tag key value key value ..." -> summary.
@@ -54,6 +57,20 @@ LiggghtsLog parse_liggghts_log(const std::string& path) {
       // the timed runs.
       if (starts_with(phase, "timed"))
         log.memory_mbytes_per_rank = std::max(log.memory_mbytes_per_rank, std::stod(line.substr(28)));
+    } else if (starts_with(line, kLammpsMemory)) {
+      // LAMMPS: "= min | avg | max Mbytes"; the deck's later runs skip the set-up that prints it.
+      std::istringstream l(line.substr(std::string(kLammpsMemory).size()));
+      double lo = 0, avg = 0;
+      std::string bar;
+      if (l >> lo >> bar >> avg) log.memory_mbytes_per_rank = std::max(log.memory_mbytes_per_rank, avg);
+    } else if (starts_with(line, kOutputRow)) {
+      // Timing breakdown row "Output  | min | avg | max | %varavg | %total".
+      if (starts_with(phase, "timed")) {
+        std::istringstream l(line.substr(std::string(kOutputRow).size()));
+        double lo = 0, avg = 0;
+        std::string bar;
+        if (l >> lo >> bar >> avg) log.timed_output_seconds.push_back(avg);
+      }
     } else if (starts_with(line, "Loop time of ")) {
       if (starts_with(phase, "timed")) {
         liggghts::LiggghtsLoopTime t;
@@ -66,7 +83,9 @@ LiggghtsLog parse_liggghts_log(const std::string& path) {
       // Half list (newton off: pairs across a rank boundary are held by both ranks).
       if (starts_with(phase, "timed")) log.neighs_per_atom = std::stod(line.substr(18));
     } else if (starts_with(line, "Neighbor list builds = ")) {
-      if (starts_with(phase, "timed")) log.timed_rebuilds += std::stol(line.substr(23));
+      const long builds = std::stol(line.substr(23));
+      if (starts_with(phase, "timed")) log.timed_rebuilds += builds, log.last_timed_rebuilds = builds;
+      if (phase == "settle") log.settle_rebuilds = builds;
     } else if (log.error.empty() && line.find("ERROR") != std::string::npos) {
       log.error = line;
     }
