@@ -2,8 +2,9 @@
 # One set-up for both README commands: install the Debian packages centrec needs
 # (only those missing), then configure and build in Release into ./build.
 # Usage: ./setup.sh [--with-liggghts] [extra cmake args...]   e.g. ./setup.sh -DCENTREC_SANITIZE=ON
-#   --with-liggghts (or CENTREC_WITH_LIGGGHTS=1): also install LIGGGHTS 3.8 and Open MPI, for
-#   `centrec dem --engine liggghts` and the engine cross-checks; not needed otherwise.
+#   --with-liggghts (or CENTREC_WITH_LIGGGHTS=1): also install LIGGGHTS 3.8, LAMMPS and Open MPI,
+#   for `centrec dem --engine liggghts`, the engine cross-checks and the benchmark's peers
+#   (apps/bench/README.md); not needed otherwise.
 # Environment: BUILD_DIR (default build), JOBS (default: all cores).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -21,7 +22,7 @@ PACKAGES=(
   python3 python3-matplotlib python3-h5py python3-numpy python3-yaml python3-meshio
   nlohmann-json3-dev libcli11-dev
 )
-if [ "$WITH_LIGGGHTS" = "1" ]; then PACKAGES+=(liggghts openmpi-bin); fi
+if [ "$WITH_LIGGGHTS" = "1" ]; then PACKAGES+=(liggghts lammps openmpi-bin); fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do
