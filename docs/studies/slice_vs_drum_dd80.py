@@ -4,11 +4,11 @@
 flow.
 
 usage (from the repository root):
-  /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py slice-case DRUM_DIR > cases/slice_vs_drum_dd80/slice.yaml
+  /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py slice-case DRUM_DIR [TIMES] > cases/slice_vs_drum_dd80/slice.yaml
   /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py compare DRUM_DIR SLICE_DIR [OUT_DIR]
 
-`slice-case` writes the slice's case: the drum's geometry, contacts and wall, 10 hexagonal
-lattice rows (8.66 d), started with the drum's mid-section free mass per length and its
+`slice-case` writes the slice's case: the drum's geometry, contacts and wall, a whole number
+of lattice rows (10 hexagonal, 8.66 d at 1.0 d; 9 square, 9 d; TIMES as many), started with the drum's mid-section free mass per length and its
 holdup controlled towards the drum's outlet flow over its sampled turns.
 
 `compare` measures both runs with the same code on their dem.h5 / summary.json (OUT_DIR,
@@ -35,7 +35,15 @@ import yaml
 
 MID = (0.3, 0.7)
 BOUNDS = {"thickness_d": 0.15, "profile": 0.10, "solid_fraction": 0.02}
-SLICE_LENGTH_D = 8.66027  # 10 hexagonal lattice rows at 1.0 d (rows 0.866 d apart)
+
+
+def slice_length_d(rough_wall, times=1):
+    """A whole number of lattice rows close to times x 8.7 d, so the slice's wall is the lattice
+    asked for: 10 hexagonal rows (0.866 x spacing apart) or 9 square rows, times `times`."""
+    a = rough_wall["spacing_d"]
+    if rough_wall["lattice"] == "hexagonal":
+        return round(10 * times * a * 3 ** 0.5 / 2, 5)
+    return round(9 * times * a, 5)
 
 
 def sampled_window(f, summary):
@@ -52,11 +60,11 @@ def rate(t, series, t0, t1):
 
 def free_mass_per_length(f, z_lo, z_hi, density):
     """Free particles' mass per length (kg/m) with centres in [z_lo, z_hi), mean over the
-    stored snapshots (glued spheres are not in the snapshots)."""
+    stored snapshots (which hold the glued layer too, flagged `glued`)."""
     per = []
     for snap in f["snapshots"].values():
         z, r = snap["position"][:, 2], snap["radius"][:]
-        sel = (z >= z_lo) & (z < z_hi)
+        sel = (z >= z_lo) & (z < z_hi) & (snap["glued"][:] == 0)
         per.append(density * 4.0 / 3.0 * np.pi * np.sum(r[sel] ** 3) / (z_hi - z_lo))
     return float(np.mean(per))
 
@@ -67,7 +75,7 @@ def load(run_dir):
     return s, cfg, h5py.File(os.path.join(run_dir, "dem.h5"), "r")
 
 
-def slice_case(drum_dir):
+def slice_case(drum_dir, times=1):
     s, cfg, f = load(drum_dir)
     d = float(f.attrs["particle_diameter_m"])
     L = cfg["drum"]["length"]
@@ -76,10 +84,11 @@ def slice_case(drum_dir):
     outlet = rate(mf["time"][:], mf["out"][:], t0, t1)
     per_len = free_mass_per_length(f, MID[0] * L, MID[1] * L, cfg["particles"]["density"])
     m = cfg["particles"]["density"] * np.pi / 6.0 * cfg["particles"]["diameter"] ** 3
-    n = int(round(per_len * SLICE_LENGTH_D * d / m))
+    length_d = slice_length_d(cfg["rough_wall"], times)
+    n = int(round(per_len * length_d * d / m))
     dem = {k: cfg[k] for k in ("drum", "particles", "contacts", "rough_wall")}
     dem["drum"] = dict(dem["drum"], outlet_lip_height_d=0)
-    dem["slice"] = {"enabled": True, "length_d": SLICE_LENGTH_D, "target_mass_flow": round(outlet, 7),
+    dem["slice"] = {"enabled": True, "length_d": length_d, "target_mass_flow": round(outlet, 7),
                     "controller_window_turns": 2, "controller_gain": 0.2}
     dem["initial_film"] = {"particles": n}
     run = cfg["run"]
@@ -88,7 +97,7 @@ def slice_case(drum_dir):
     dem["sampling"] = {"turns": 6, "snapshots_per_turn": 8}
     head = (f"# Slice vs drum at D/d 80 (docs/slice_vs_drum_dd80.md; written by\n"
             f"# docs/studies/slice_vs_drum_dd80.py slice-case {drum_dir}): a periodic slice of the drum\n"
-            f"# cases/slice_vs_drum_dd80/drum.yaml, 10 hexagonal lattice rows, started with the drum's\n"
+            f"# {s['case']}, {length_d:g} d ({cfg['rough_wall']['lattice']} lattice rows), started with the drum's\n"
             f"# mid-section (z/L 0.3-0.7) free mass per length ({per_len * 1e3:.3f} g/m) and its holdup\n"
             f"# controlled every 2 turns towards the drum's outlet flow over its {s['sampled_turns']} sampled\n"
             f"# turns ({outlet * 1e3:.3f} g/s); 6 turns of spin-up (extended up to 6 more until the flow over\n"
@@ -106,7 +115,9 @@ def measure(run_dir):
     mf = f["mass_flow"]
     t = mf["time"][:]
     fl = f["film"]
+    rw = cfg["rough_wall"]
     r = {"dir": run_dir, "mode": "slice" if is_slice else "drum", "wall_time_s": s["wall_time_s"],
+         "wall": f"{rw['lattice']} {rw['spacing_d']:g} d", "length_d": length / d,
          "particle_steps": s["particle_steps_per_s"] * s["wall_time_s"], "free_particles": s["free_particles"],
          "glued_particles": s["glued_particles"], "sampled_turns": s["sampled_turns"], "steady": s["steady_state"],
          "steady_text": s["steady_state_text"]}
@@ -259,8 +270,8 @@ def draw(dr, sl, prof, path):
     ax.set_title("thickness along the drum", fontsize=9)
     ax.legend(fontsize=7)
     ax.grid(alpha=0.3)
-    fig.suptitle("D/d 80, glued hexagonal 1.0 d wall: a controlled periodic slice (8.66 d) against the drum's "
-                 "mid-section", fontsize=10)
+    fig.suptitle(f"D/d 80, glued {dr['wall']} wall: a controlled periodic slice ({sl['length_d']:g} d) against the "
+                 f"drum's mid-section ({dr['length_d']:.0f} d drum), both at {dr['flow_kg_s'] * 1e3:.2f} g/s", fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -269,7 +280,7 @@ def draw(dr, sl, prof, path):
 
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "slice-case":
-        slice_case(sys.argv[2])
+        slice_case(sys.argv[2], int(sys.argv[3]) if len(sys.argv) > 3 else 1)
     elif len(sys.argv) >= 4 and sys.argv[1] == "compare":
         compare(sys.argv[2], sys.argv[3], sys.argv[4] if len(sys.argv) > 4 else "docs/slice_vs_drum_dd80")
     else:
