@@ -6,6 +6,7 @@ flow.
 usage (from the repository root):
   /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py slice-case DRUM_DIR [TIMES] > cases/slice_vs_drum_dd80/slice.yaml
   /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py compare DRUM_DIR SLICE_DIR [OUT_DIR]
+  /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py ages DRUM_DIR [SLICE_DIR ...] [--out OUT_DIR]
 
 `slice-case` writes the slice's case: the drum's geometry, contacts and wall, a whole number
 of lattice rows (10 hexagonal, 8.66 d at 1.0 d; 9 square, 9 d; TIMES as many), started with the drum's mid-section free mass per length and its
@@ -24,6 +25,15 @@ default docs/slice_vs_drum_dd80: table.md, results.json, slice_vs_drum.png):
 - the ring profiles the coupling maps onto the thermal film (docs/coupling.md "Film as
   measured"): solid fraction and axial volume flux density phi u over the whole
   circumference, drum sections in [0.3, 0.7] averaged, as a relative L1 difference.
+
+`ages` splits the drum's flow by the particles' age (time since the feeder inserted them; the
+fed particles' ids follow the glued layer and the initial film in insertion order, so an id
+maps to its insertion time through the cumulative fed count): in the mid-section, the share of
+mass and axial flux per age class, their wall distance and speed; the outlet's age
+distribution (ids that leave between two snapshots); and the ring profiles (solid fraction,
+axial velocity, axial volume flux density over the whole circumference, from the snapshots) of
+the drum's settled film (particles older than AGE_CUT) against each slice (all its particles).
+OUT_DIR (default docs/slice_vs_drum_dd80/ages): table.md, results.json, ages.png.
 """
 import json
 import os
@@ -35,6 +45,9 @@ import yaml
 
 MID = (0.3, 0.7)
 BOUNDS = {"thickness_d": 0.15, "profile": 0.10, "solid_fraction": 0.02}
+AGE_CUT = 0.2          # s: a fed particle younger than this is still in the feed stream (see `ages`)
+AGE_EDGES = [0.0, 0.1, 0.2, 0.4, 0.8, 1.6, 3.2]
+W_EDGES = np.arange(0.0, 10.01, 0.25)   # wall distance of centres [d] for the ring profiles
 
 
 def slice_length_d(rough_wall, times=1):
@@ -278,7 +291,233 @@ def draw(dr, sl, prof, path):
     print("wrote", path)
 
 
+def particle_ages(f, cfg, summary):
+    """Per-snapshot age function: insertion time of fed particles from their ids. Ids run
+    glued layer, initial film, then fed particles in insertion order (dem/scene/feeder.cpp);
+    particles present from the start get age +inf."""
+    m = cfg["particles"]["density"] * np.pi / 6.0 * cfg["particles"]["diameter"] ** 3
+    first_fed = int(summary["glued_particles"]) + int(cfg["initial_film"]["particles"])
+    mf = f["mass_flow"]
+    t, fed_n = mf["time"][:], mf["fed"][:] / m
+
+    def ages(ids, t_now):
+        k = ids - first_fed
+        t_in = np.interp(k + 0.5, fed_n, t)
+        return np.where(k >= 0, t_now - t_in, np.inf)
+    return ages
+
+
+def snapshots_in(f, t0, t1):
+    snaps = sorted(f["snapshots"].values(), key=lambda g: float(g.attrs["time"]))
+    return [g for g in snaps if t0 - 1e-9 <= float(g.attrs["time"]) <= t1 + 1e-9]
+
+
+def ring_profile(snaps, select, d, R, length):
+    """Solid fraction, mean axial velocity and axial volume flux density phi u against the wall
+    distance of centres, over the whole circumference: particle volume (and volume x u) with
+    centres in each annulus over the annulus' volume, mean over the snapshots."""
+    vol = np.zeros(len(W_EDGES) - 1)
+    flux = np.zeros_like(vol)
+    for g in snaps:
+        sel = select(g)
+        p, v, r = g["position"][:][sel], g["velocity"][:][sel], g["radius"][:][sel]
+        w = (R - np.hypot(p[:, 0], p[:, 1])) / d
+        V = 4.0 / 3.0 * np.pi * r ** 3
+        vol += np.histogram(w, W_EDGES, weights=V)[0]
+        flux += np.histogram(w, W_EDGES, weights=V * v[:, 2])[0]
+    ro, ri = R - W_EDGES[:-1] * d, R - W_EDGES[1:] * d
+    shell = np.pi * (ro ** 2 - ri ** 2) * length * len(snaps)
+    phi, q = vol / shell, flux / shell
+    u = np.divide(flux, vol, out=np.full_like(vol, np.nan), where=vol > 0)
+    return {"w": (0.5 * (W_EDGES[:-1] + W_EDGES[1:])).tolist(), "phi": phi.tolist(), "u": u.tolist(), "q": q.tolist()}
+
+
+def ages(drum_dir, slice_dirs, out_dir):
+    s, cfg, f = load(drum_dir)
+    d = float(f.attrs["particle_diameter_m"])
+    R = float(f.attrs["drum_radius_m"])
+    L = cfg["drum"]["length"]
+    rho = cfg["particles"]["density"]
+    t0, t1 = sampled_window(f, s)
+    snaps = snapshots_in(f, t0, t1)
+    age_of = particle_ages(f, cfg, s)
+    z_lo, z_hi = MID[0] * L, MID[1] * L
+    edges = AGE_EDGES + [np.inf]
+    mass = np.zeros(len(edges) - 1)
+    flux = np.zeros_like(mass)
+    wsum = np.zeros_like(mass)
+    for g in snaps:
+        p = g["position"][:]
+        sel = (g["glued"][:] == 0) & (p[:, 2] >= z_lo) & (p[:, 2] < z_hi)
+        a = age_of(g["id"][:][sel], float(g.attrs["time"]))
+        V = 4.0 / 3.0 * np.pi * g["radius"][:][sel] ** 3
+        w = (R - np.hypot(p[sel, 0], p[sel, 1])) / d
+        b = np.digitize(a, AGE_EDGES) - 1   # the last class (> 3.2 s) also holds the initial film (inf)
+        mass += np.bincount(b, V, len(mass))
+        flux += np.bincount(b, V * g["velocity"][:][sel, 2], len(mass))
+        wsum += np.bincount(b, V * w, len(mass))
+    n = len(snaps)
+    span = (z_hi - z_lo)
+    classes = []
+    for k in range(len(mass)):
+        classes.append({"age_s": [edges[k], edges[k + 1]], "mass_share": mass[k] / mass.sum(),
+                        "flux_share": flux[k] / flux.sum(), "wall_distance_d": wsum[k] / mass[k],
+                        "u_m_s": flux[k] / mass[k]})
+    # whole-section flow through the mid-section from the snapshots (kg/s), total and settled
+    settled_from = int(np.searchsorted(AGE_EDGES, AGE_CUT))
+    flow_mid = rho * flux.sum() / n / span
+    flow_settled = rho * flux[settled_from:].sum() / n / span
+    hold_settled = rho * mass[settled_from:].sum() / n / span
+    # along the drum: per axial section, free mass per length and the flow carried by the
+    # feed stream (age < AGE_CUT) and by the settled film
+    zedges = np.linspace(0.0, L, 11)
+    zm = np.zeros(10)
+    zf_stream = np.zeros(10)
+    zf_settled = np.zeros(10)
+    for g in snaps:
+        p = g["position"][:]
+        sel = (g["glued"][:] == 0) & (p[:, 2] >= 0.0) & (p[:, 2] < L)
+        a = age_of(g["id"][:][sel], float(g.attrs["time"]))
+        V = 4.0 / 3.0 * np.pi * g["radius"][:][sel] ** 3
+        k = np.minimum((p[sel, 2] / L * 10).astype(int), 9)
+        vz = g["velocity"][:][sel, 2]
+        zm += np.bincount(k, V, 10)
+        zf_stream += np.bincount(k, V * vz * (a < AGE_CUT), 10)
+        zf_settled += np.bincount(k, V * vz * (a >= AGE_CUT), 10)
+    dz = L / 10
+    along = {"z_over_length": (0.5 * (zedges[:-1] + zedges[1:]) / L).tolist(),
+             "mass_per_length_kg_m": (rho * zm / n / dz).tolist(),
+             "stream_flow_kg_s": (rho * zf_stream / n / dz).tolist(),
+             "settled_flow_kg_s": (rho * zf_settled / n / dz).tolist()}
+    # the outlet's age distribution: free ids present in one snapshot and gone from the next
+    out_ages = []
+    for g, h in zip(snaps[:-1], snaps[1:]):
+        ids_g = g["id"][:][g["glued"][:] == 0]
+        gone = np.setdiff1d(ids_g, h["id"][:], assume_unique=True)
+        out_ages.append(age_of(gone, float(g.attrs["time"])))
+    out_ages = np.concatenate(out_ages)
+    finite = np.isfinite(out_ages)
+    res = {"drum": drum_dir, "age_cut_s": AGE_CUT, "snapshots": n, "classes": classes,
+           "mid_flow_kg_s": flow_mid, "settled_flow_kg_s": flow_settled,
+           "settled_mass_per_length_kg_m": hold_settled,
+           "settled_flux_per_holdup_m_s": flow_settled / hold_settled,
+           "outlet_particles": int(len(out_ages)),
+           "outlet_age_quantiles_s": {q: float(np.quantile(out_ages[finite], q)) for q in (0.1, 0.25, 0.5, 0.75, 0.9)},
+           "outlet_share_younger_than_cut": float(np.mean(out_ages < AGE_CUT)),
+           "outlet_share_from_initial_film": float(np.mean(~finite)), "along_z": along}
+    prof = {"drum, all free": ring_profile(snaps, lambda g: (g["glued"][:] == 0) & (g["position"][:, 2] >= z_lo)
+                                           & (g["position"][:, 2] < z_hi), d, R, span),
+            f"drum, settled (age > {AGE_CUT:g} s)":
+                ring_profile(snaps, lambda g: (g["glued"][:] == 0) & (g["position"][:, 2] >= z_lo)
+                             & (g["position"][:, 2] < z_hi)
+                             & (age_of(g["id"][:], float(g.attrs["time"])) > AGE_CUT), d, R, span)}
+    slices = []
+    for sd in slice_dirs:
+        ss, scfg, sf = load(sd)
+        sl_len = scfg["slice"]["length_d"] * d
+        st0, st1 = sampled_window(sf, ss)
+        ssn = snapshots_in(sf, st0, st1)
+        pr = ring_profile(ssn, lambda g: g["glued"][:] == 0, d, R, sl_len)
+        mft = sf["mass_flow"]["time"][:]
+        sel = (mft >= st0) & (mft <= st1)
+        flow = float(np.mean(sf["mass_flow"]["slice_axial_flow"][:][sel]))
+        hold = free_mass_per_length(sf, 0.0, sl_len, rho)
+        ref = prof[f"drum, settled (age > {AGE_CUT:g} s)"]
+        qd, qs = np.array(ref["q"]), np.array(pr["q"])
+        pd_, ps = np.array(ref["phi"]), np.array(pr["phi"])
+        slices.append({"dir": sd, "length_d": scfg["slice"]["length_d"], "flow_kg_s": flow,
+                       "target_kg_s": ss.get("slice_target_mdot_kg_s", 0.0),
+                       "mass_per_length_kg_m": hold, "flux_per_holdup_m_s": flow / hold,
+                       "ring_flux_l1_vs_settled": float(np.sum(np.abs(qs - qd)) / np.sum(np.abs(qd))),
+                       "ring_phi_l1_vs_settled": float(np.sum(np.abs(ps - pd_)) / np.sum(pd_)),
+                       "steady": ss["steady_state_text"], "wall_time_s": ss["wall_time_s"]})
+        prof[f"slice {os.path.basename(sd.rstrip('/'))}"] = pr
+    res["slices"] = slices
+    res["profiles"] = prof
+    os.makedirs(out_dir, exist_ok=True)
+    json.dump(res, open(os.path.join(out_dir, "results.json"), "w"), indent=1)
+    lines = [f"Drum {drum_dir}, mid-section z/L {MID[0]}-{MID[1]}, {n} snapshots over the sampled turns.", "",
+             "| age since fed [s] | share of free mass | share of axial flux | wall distance [d] | mean axial speed [m/s] |",
+             "|---|---|---|---|---|"]
+    for c in classes:
+        a0, a1 = c["age_s"]
+        lab = f"{a0:g}-{a1:g}" if np.isfinite(a1) else f"> {a0:g}"
+        lines.append(f"| {lab} | {100 * c['mass_share']:.1f} % | {100 * c['flux_share']:.1f} % | "
+                     f"{c['wall_distance_d']:.2f} | {c['u_m_s']:.3f} |")
+    q = res["outlet_age_quantiles_s"]
+    lines += ["",
+              f"Mid-section flow from the snapshots {flow_mid * 1e3:.2f} g/s; the settled film (age > {AGE_CUT:g} s) "
+              f"carries {flow_settled * 1e3:.2f} g/s ({100 * flow_settled / flow_mid:.0f} %) with "
+              f"{hold_settled * 1e3:.0f} g/m: flux per holdup {flow_settled / hold_settled:.4f} m/s.",
+              f"Outlet: {len(out_ages)} particles left over the window; {100 * res['outlet_share_younger_than_cut']:.0f} % "
+              f"younger than {AGE_CUT:g} s; age quantiles 10/25/50/75/90 %: "
+              + " / ".join(f"{q[k]:.2f}" for k in q) + " s.", ""]
+    lines += [f"Along the drum ({L / d:.0f} d; sections of {L / d / 10:.1f} d):", "",
+              "| z/L | free mass per length [g/m] | flow of the feed stream (age < cut) [g/s] | flow of the settled film [g/s] |",
+              "|---|---|---|---|"]
+    for k in range(10):
+        lines.append(f"| {along['z_over_length'][k]:.2f} | {1e3 * along['mass_per_length_kg_m'][k]:.0f} | "
+                     f"{1e3 * along['stream_flow_kg_s'][k]:.2f} | {1e3 * along['settled_flow_kg_s'][k]:.2f} |")
+    lines.append("")
+    if slices:
+        lines += ["| run | length [d] | flow [g/s] | free mass per length [g/m] | flux per holdup [m/s] | "
+                  "ring flux / solid fraction vs settled film (rel. L1) |", "|---|---|---|---|---|---|",
+                  f"| drum settled film | - | {flow_settled * 1e3:.2f} | {hold_settled * 1e3:.0f} | "
+                  f"{flow_settled / hold_settled:.4f} | - |"]
+        for sl in slices:
+            tgt = f" (target {sl['target_kg_s'] * 1e3:.2f})" if sl["target_kg_s"] else " (fixed holdup)"
+            lines.append(f"| {sl['dir']} | {sl['length_d']:g} | {sl['flow_kg_s'] * 1e3:.2f}{tgt} | "
+                         f"{sl['mass_per_length_kg_m'] * 1e3:.0f} | {sl['flux_per_holdup_m_s']:.4f} | "
+                         f"{100 * sl['ring_flux_l1_vs_settled']:.0f} % / {100 * sl['ring_phi_l1_vs_settled']:.0f} % |")
+    table = "\n".join(lines) + "\n"
+    open(os.path.join(out_dir, "table.md"), "w").write(table)
+    print(table)
+    draw_ages(res, os.path.join(out_dir, "ages.png"))
+
+
+def draw_ages(res, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4))
+    ax = axes[0]
+    labs = [f"{c['age_s'][0]:g}-{c['age_s'][1]:g}" if np.isfinite(c["age_s"][1]) else f">{c['age_s'][0]:g}"
+            for c in res["classes"]]
+    x = np.arange(len(labs))
+    ax.bar(x - 0.2, [100 * c["mass_share"] for c in res["classes"]], 0.4, label="share of free mass")
+    ax.bar(x + 0.2, [100 * c["flux_share"] for c in res["classes"]], 0.4, label="share of axial flux")
+    ax.set_xticks(x, labs)
+    ax.set_xlabel("age since fed [s]")
+    ax.set_ylabel("%")
+    ax.set_title("drum mid-section: who carries the flow", fontsize=9)
+    ax.legend(fontsize=8)
+    styles = ["k-", "k--", "C1-", "C2-", "C3-", "C4-"]
+    for ax, key, lab in ((axes[1], "u", "mean axial velocity [m/s]"), (axes[2], "q", "axial volume flux phi u [m/s]")):
+        for (name, pr), st in zip(res["profiles"].items(), styles):
+            ax.plot(pr["w"], pr[key], st, lw=1.2, label=name)
+        ax.set_xlabel("wall distance of centres [d]")
+        ax.set_ylabel(lab)
+        ax.set_xlim(0, 8)
+        ax.grid(alpha=0.3)
+    axes[1].legend(fontsize=7)
+    axes[1].set_title("over the whole circumference", fontsize=9)
+    axes[2].set_title("the flux the coupling maps", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    print("wrote", path)
+
+
 if __name__ == "__main__":
+    if len(sys.argv) >= 3 and sys.argv[1] == "ages":
+        args = sys.argv[2:]
+        out = "docs/slice_vs_drum_dd80/ages"
+        if "--out" in args:
+            k = args.index("--out")
+            out = args[k + 1]
+            del args[k:k + 2]
+        ages(args[0], args[1:], out)
+        sys.exit(0)
     if len(sys.argv) >= 3 and sys.argv[1] == "slice-case":
         slice_case(sys.argv[2], int(sys.argv[3]) if len(sys.argv) > 3 else 1)
     elif len(sys.argv) >= 4 and sys.argv[1] == "compare":
