@@ -7,6 +7,8 @@ usage (from the repository root):
   /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py slice-case DRUM_DIR [TIMES] > cases/slice_vs_drum_dd80/slice.yaml
   /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py compare DRUM_DIR SLICE_DIR [OUT_DIR]
   /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py ages DRUM_DIR [SLICE_DIR ...] [--out OUT_DIR]
+  any of them with --window LO,HI: the drum's sections z/L in [LO, HI] instead of the
+  mid-section 0.3-0.7 (velocity arcs: the drum's arcs nearest the window's centre)
 
 `slice-case` writes the slice's case: the drum's geometry, contacts and wall, a whole number
 of lattice rows (10 hexagonal, 8.66 d at 1.0 d; 9 square, 9 d; TIMES as many), started with the drum's mid-section free mass per length and its
@@ -111,7 +113,7 @@ def slice_case(drum_dir, times=1):
     head = (f"# Slice vs drum at D/d 80 (docs/slice_vs_drum_dd80.md; written by\n"
             f"# docs/studies/slice_vs_drum_dd80.py slice-case {drum_dir}): a periodic slice of the drum\n"
             f"# {s['case']}, {length_d:g} d ({cfg['rough_wall']['lattice']} lattice rows), started with the drum's\n"
-            f"# mid-section (z/L 0.3-0.7) free mass per length ({per_len * 1e3:.3f} g/m) and its holdup\n"
+            f"# sections z/L {MID[0]:g}-{MID[1]:g} free mass per length ({per_len * 1e3:.3f} g/m) and its holdup\n"
             f"# controlled every 2 turns towards the drum's outlet flow over its {s['sampled_turns']} sampled\n"
             f"# turns ({outlet * 1e3:.3f} g/s); 6 turns of spin-up (extended up to 6 more until the flow over\n"
             f"# the last 6 turns is within 5 % of the target), 6 sampled turns of 8 snapshots.\n")
@@ -153,7 +155,10 @@ def measure(run_dir):
         sec = (zs >= MID[0]) & (zs <= MID[1])
         zr = fl["ring_z"][:] / length
         rings = (zr >= MID[0]) & (zr <= MID[1])
-        arcs = np.flatnonzero(np.isclose(fl["arc_z_over_length"][:], 0.5))
+        # the arcs nearest the window's centre
+        az = fl["arc_z_over_length"][:]
+        arcs = np.flatnonzero(np.isclose(az, az[np.argmin(np.abs(az - 0.5 * (MID[0] + MID[1])))]))
+        r["arc_z_over_length"] = float(az[arcs[0]])
         r["z_over_length"] = zs.tolist()
         r["thickness_along_z_d"] = (fl["thickness_mean"][:] / d).tolist()
     r["mass_per_length_kg_m"] = free_mass_per_length(f, z_lo, z_hi, cfg["particles"]["density"])
@@ -213,11 +218,11 @@ def compare(drum_dir, slice_dir, out_dir):
     json.dump({"result": res, "drum": dr, "slice": sl}, open(os.path.join(out_dir, "results.json"), "w"), indent=1)
     ok = lambda b: "within" if b else "OUTSIDE"  # noqa: E731
     lines = [
-        "| figure | drum mid-section (z/L 0.3-0.7) | slice | difference | bound |",
+        f"| figure | drum sections z/L {MID[0]:g}-{MID[1]:g} | slice | difference | bound |",
         "|---|---|---|---|---|",
         f"| thickness eqs 4-7 [d] | {dr['thickness_d']:.2f} | {sl['thickness_d']:.2f} | "
         f"{res['thickness_d']['difference']:+.2f} | 0.15 d: {ok(res['within']['thickness'])} |",
-        "| flux-weighted profile difference 45 / 90 / 135 deg | (z/L 0.5) | | "
+        f"| flux-weighted profile difference 45 / 90 / 135 deg | (z/L {dr['arc_z_over_length']:g}) | | "
         + " / ".join(f"{100 * x:.1f} %" for x in prof) + f" | 10 %: {ok(res['within']['profile'])} |",
         f"| solid fraction, core, stationary / moving | {dr['phi_core'][0]:.3f} / {dr['phi_core'][1]:.3f} | "
         f"{sl['phi_core'][0]:.3f} / {sl['phi_core'][1]:.3f} | "
@@ -265,7 +270,7 @@ def draw(dr, sl, prof, path):
     axes[0].set_ylabel("axial velocity [m/s]")
     axes[0].legend(fontsize=8)
     ax = axes[3]
-    for r, style, lab in ((dr, "k-o", "drum z/L 0.3-0.7"), (sl, "C1-s", "slice")):
+    for r, style, lab in ((dr, "k-o", f"drum z/L {MID[0]:g}-{MID[1]:g}"), (sl, "C1-s", "slice")):
         ax.plot(w, r["ring_phi"], style, ms=3, lw=1.0, label=f"{lab}: solid fraction")
         ax.plot(w, np.array(r["ring_flux"]) * 10, style.replace("-", "--"), ms=3, lw=0.8,
                 label=f"{lab}: volume flux x 10 [m/s]")
@@ -509,6 +514,10 @@ def draw_ages(res, path):
 
 
 if __name__ == "__main__":
+    if "--window" in sys.argv:   # the drum's sections to measure, z/L LO,HI (default 0.3,0.7)
+        k = sys.argv.index("--window")
+        MID = tuple(float(v) for v in sys.argv[k + 1].split(","))
+        del sys.argv[k:k + 2]
     if len(sys.argv) >= 3 and sys.argv[1] == "ages":
         args = sys.argv[2:]
         out = "docs/slice_vs_drum_dd80/ages"
