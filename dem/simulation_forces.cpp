@@ -21,6 +21,7 @@
 
 #include "dem/contact_law.hpp"
 #include "dem/first_half_step.hpp"
+#include "dem/pair_batch_avx2.hpp"
 #include "dem/simulation_impl.hpp"
 
 // The pass's steps are inlined into its loops: no call per row or per list entry.
@@ -144,8 +145,56 @@ struct ForcePass {
   // 2. The pairs of row i (partners j > i): the owner's share summed into F, T; the
   // partner's share routed. Each pair in canonical operand order (lower id first): the
   // result and the stored history do not depend on which of the two owns the row after a
-  // re-sort.
+  // re-sort. walk_row tests each entry for contact (forgetting separated ones) and hands
+  // the contacts on in entry order; apply_pair uses a contact's result. The law is
+  // evaluated one pair at a time (scalar) or, with AVX2, four at a time
+  // (pair_batch_avx2.hpp): the same bits either way.
+#ifdef CENTREC_PAIR_BATCH
+  // Speed: contacts collected four at a time (A), their law evaluated in AVX2 lanes (B),
+  // the results applied pair by pair in entry order (C); the row's last one to three in
+  // lanes too, the spare lanes repeating one of them.
   CENTREC_INLINE void pair_row(long i, Vec3& F, Vec3& T, BlockTally& tally) const {
+    pair_batch::PairRef batch[pair_batch::kLanes];
+    struct Entry {
+      std::uint32_t e;
+      std::int32_t j;
+      bool i_first;
+    } entry[pair_batch::kLanes];
+    int count = 0;
+    const auto evaluate_batch = [&] {
+      pair_batch::PairResults r;
+      pair_batch::evaluate_pairs(batch, count, {V, Wv, R, M}, dt, r);
+      for (int k = 0; k < count; ++k)
+        apply_pair(i, entry[k].e, entry[k].j, entry[k].i_first, r.delta[k], r.force[k], r.torque_a[k],
+                   r.torque_c[k], ContactHistory{r.shear[k], r.roll[k]}, F, T, tally);
+      count = 0;
+    };
+    walk_row(i, [&](std::uint32_t e, std::int32_t j, bool i_first, long a, long c, Vec3 sd, double dist2,
+                    double rsum) {
+      batch[count] = {sd, dist2, rsum, a, c, &hist[e], &pair(MAT[a], MAT[c])};
+      entry[count] = {e, j, i_first};
+      if (++count == pair_batch::kLanes) evaluate_batch();
+    });
+    if (count > 0) evaluate_batch();
+  }
+#else
+  CENTREC_INLINE void pair_row(long i, Vec3& F, Vec3& T, BlockTally& tally) const {
+    walk_row(i, [&](std::uint32_t e, std::int32_t j, bool i_first, long a, long c, Vec3 sd, double dist2,
+                    double rsum) {
+      const double dist = std::sqrt(dist2);
+      const double delta = rsum - dist;
+      const ContactInput in = pair_contact_input(sd, dist, delta, R[a], R[c], M[a], M[c], V[a], V[c], Wv[a], Wv[c]);
+      const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
+      apply_pair(i, e, j, i_first, delta, res.force, res.torque_i, res.torque_j, res.history, F, T, tally);
+    });
+  }
+#endif
+
+  // The entries of row i in order: a separated pair is forgotten; for one in contact,
+  // contact(e, j, i_first, a, c, sd, dist2, rsum) with a, c the pair in canonical order,
+  // sd = x_a - x_c (minimum image), dist2 = |sd|^2 < rsum^2, rsum = R_i + R_j.
+  template <class Contact>
+  CENTREC_INLINE void walk_row(long i, Contact contact) const {
     const Vec3 xi = X[i];
     const double ri = R[i];
     const std::int64_t idi = ID[i];
@@ -159,41 +208,35 @@ struct ForcePass {
         if (touch[e]) forget(e);
         continue;
       }
-      const double dist = std::sqrt(dist2);
-      const double delta = rsum - dist;
-      if (!(delta <= limit * std::min(ri, R[j])))
-        tally.note_blow_up(i, xi, delta, [&] { return "particle id " + std::to_string(ID[j]); });
       const bool i_first = idi < ID[j];
-      const long a = i_first ? i : j, c = i_first ? j : i;
-      const double ra = R[a], rc = R[c], ma = M[a], mc = M[c];
-      const Vec3 nrm = (1.0 / dist) * (i_first ? d : -d);
-      const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
-      const ContactInput in{delta,
-                            nrm,
-                            contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, nrm),
-                            Wv[a] - Wv[c],
-                            ra * rc / (ra + rc),
-                            ma * mc / (ma + mc),
-                            arm_a,
-                            arm_c};
-      const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
-      if (update_history) hist[e] = res.history;
-      Vec3 fj, tj;
-      if (i_first) {
-        F += res.force;
-        T += res.torque_i;
-        fj = -res.force;
-        tj = res.torque_j;
-      } else {
-        F -= res.force;
-        T += res.torque_j;
-        fj = res.force;
-        tj = res.torque_i;
-      }
-      route_share(e, j, fj, tj);
-      touch[e] = 1;
-      ++tally.pair_contacts;
+      contact(e, j, i_first, i_first ? i : j, i_first ? j : i, i_first ? d : -d, dist2, rsum);
     }
+  }
+
+  // The result of entry e's contact (i with j, overlap delta; force and torques of the
+  // pair in canonical order, a the lower id), in entry order: the overlap checked, the
+  // history stored, the owner's share summed into F, T, the partner's routed.
+  CENTREC_INLINE void apply_pair(long i, std::uint32_t e, long j, bool i_first, double delta, Vec3 force,
+                                 Vec3 torque_a, Vec3 torque_c, const ContactHistory& history, Vec3& F, Vec3& T,
+                                 BlockTally& tally) const {
+    if (!(delta <= limit * std::min(R[i], R[j])))
+      tally.note_blow_up(i, X[i], delta, [&] { return "particle id " + std::to_string(ID[j]); });
+    if (update_history) hist[e] = history;
+    Vec3 fj, tj;
+    if (i_first) {
+      F += force;
+      T += torque_a;
+      fj = -force;
+      tj = torque_c;
+    } else {
+      F -= force;
+      T += torque_c;
+      fj = force;
+      tj = torque_a;
+    }
+    route_share(e, j, fj, tj);
+    touch[e] = 1;
+    ++tally.pair_contacts;
   }
 
   // Speed: a pair that has just separated is forgotten (its history and parked share
