@@ -1,7 +1,8 @@
 // The force pass of Simulation (docs/dem_physics.md): Hertz-Mindlin-EPSD2 for every
 // pair of the half neighbour list and every candidate wall, summed deterministically
 // (docs/architecture.md "Threads and determinism"). compute_forces works on ranges of
-// rows (one per thread), one row (particle i) at a time:
+// rows (one per thread), one row (particle i) at a time (ForcePass::sweep_rows; with AVX2
+// the contact law of four pairs at once, results applied in the same order):
 //   1. ForcePass::fetch_ahead   the data the rows ahead will read, into cache
 //   2. ForcePass::pair_row      the contacts of i with its partners j > i: the owner's
 //                               share summed at once, the partner's routed (route_share)
@@ -146,38 +147,7 @@ struct ForcePass {
   // partner's share routed. Each pair in canonical operand order (lower id first): the
   // result and the stored history do not depend on which of the two owns the row after a
   // re-sort. walk_row tests each entry for contact (forgetting separated ones) and hands
-  // the contacts on in entry order; apply_pair uses a contact's result. The law is
-  // evaluated one pair at a time (scalar) or, with AVX2, four at a time
-  // (pair_batch_avx2.hpp): the same bits either way.
-#ifdef CENTREC_PAIR_BATCH
-  // Speed: contacts collected four at a time (A), their law evaluated in AVX2 lanes (B),
-  // the results applied pair by pair in entry order (C); the row's last one to three in
-  // lanes too, the spare lanes repeating one of them.
-  CENTREC_INLINE void pair_row(long i, Vec3& F, Vec3& T, BlockTally& tally) const {
-    pair_batch::PairRef batch[pair_batch::kLanes];
-    struct Entry {
-      std::uint32_t e;
-      std::int32_t j;
-      bool i_first;
-    } entry[pair_batch::kLanes];
-    int count = 0;
-    const auto evaluate_batch = [&] {
-      pair_batch::PairResults r;
-      pair_batch::evaluate_pairs(batch, count, {V, Wv, R, M}, dt, r);
-      for (int k = 0; k < count; ++k)
-        apply_pair(i, entry[k].e, entry[k].j, entry[k].i_first, r.delta[k], r.force[k], r.torque_a[k],
-                   r.torque_c[k], ContactHistory{r.shear[k], r.roll[k]}, F, T, tally);
-      count = 0;
-    };
-    walk_row(i, [&](std::uint32_t e, std::int32_t j, bool i_first, long a, long c, Vec3 sd, double dist2,
-                    double rsum) {
-      batch[count] = {sd, dist2, rsum, a, c, &hist[e], &pair(MAT[a], MAT[c])};
-      entry[count] = {e, j, i_first};
-      if (++count == pair_batch::kLanes) evaluate_batch();
-    });
-    if (count > 0) evaluate_batch();
-  }
-#else
+  // the contacts on in entry order; apply_pair uses a contact's result.
   CENTREC_INLINE void pair_row(long i, Vec3& F, Vec3& T, BlockTally& tally) const {
     walk_row(i, [&](std::uint32_t e, std::int32_t j, bool i_first, long a, long c, Vec3 sd, double dist2,
                     double rsum) {
@@ -187,6 +157,79 @@ struct ForcePass {
       const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
       apply_pair(i, e, j, i_first, delta, res.force, res.torque_i, res.torque_j, res.history, F, T, tally);
     });
+  }
+
+#ifndef CENTREC_PAIR_BATCH
+  // Steps 1-3 for rows i0 .. i1-1 (one block). Returns the largest squared displacement.
+  CENTREC_INLINE double sweep_rows(long i0, long i1, BlockTally& tally) const {
+    double d2 = 0.0;
+    for (long i = i0; i < i1; ++i) {
+      fetch_ahead(i);
+      Vec3 F{}, T{};
+      pair_row(i, F, T, tally);
+      d2 = std::max(d2, row_total(i, F, T, tally));
+    }
+    return d2;
+  }
+#else
+  // Speed: steps 1-3 for rows i0 .. i1-1 (one block) with the contact law evaluated four
+  // pairs at a time in AVX2 lanes (pair_batch_avx2.hpp), the lanes filled across row ends.
+  // The contacts are collected in entry order (walk_row), evaluated when four are (and at
+  // the block's end, spare lanes repeating one), then applied in that order (apply_pair);
+  // a row is totalled (row_total) once the contacts of every row up to it are applied.
+  // Every sum, history, share and tally entry is thus made in the scalar order, pair_row
+  // then row_total row by row: the same bits. Pending rows read only particles above the
+  // rows totalled meanwhile, which their totals do not move.
+  CENTREC_INLINE double sweep_rows(long i0, long i1, BlockTally& tally) const {
+    pair_batch::PairRef batch[pair_batch::kLanes];
+    struct Entry {
+      long i;
+      std::uint32_t e;
+      std::int32_t j;
+      bool i_first;
+    } entry[pair_batch::kLanes];
+    int count = 0;
+    double d2 = 0.0;
+    long next_total = i0, open = -1;  // the first row not totalled; the row whose sums F, T are open
+    Vec3 F{}, T{};
+    const auto total_until = [&](long end) {  // rows next_total .. end-1: all their contacts applied
+      for (; next_total < end; ++next_total) {
+        if (next_total != open) {
+          d2 = std::max(d2, row_total(next_total, Vec3{}, Vec3{}, tally));
+          continue;
+        }
+        d2 = std::max(d2, row_total(next_total, F, T, tally));
+        F = T = Vec3{};
+        open = -1;
+      }
+    };
+    const auto evaluate_batch = [&] {
+      pair_batch::PairResults r;
+      pair_batch::evaluate_pairs(batch, count, {V, Wv, R, M}, dt, r);
+      for (int k = 0; k < count; ++k) {
+        const Entry& en = entry[k];
+        if (en.i != open) {
+          total_until(en.i);
+          open = en.i;
+        }
+        apply_pair(en.i, en.e, en.j, en.i_first, r.delta[k], r.force[k], r.torque_a[k], r.torque_c[k],
+                   ContactHistory{r.shear[k], r.roll[k]}, F, T, tally);
+      }
+      count = 0;
+    };
+    for (long i = i0; i < i1; ++i) {
+      fetch_ahead(i);
+      walk_row(i, [&](std::uint32_t e, std::int32_t j, bool i_first, long a, long c, Vec3 sd, double dist2,
+                      double rsum) {
+        batch[count] = {sd, dist2, rsum, a, c, &hist[e], &pair(MAT[a], MAT[c])};
+        entry[count] = {i, e, j, i_first};
+        if (++count == pair_batch::kLanes) evaluate_batch();
+      });
+      if (count == 0) total_until(i + 1);
+    }
+    if (count > 0) evaluate_batch();
+    total_until(i1);
+    return d2;
   }
 #endif
 
@@ -384,15 +427,7 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   for (long b = first_block_of_part(nblocks, parts, part); b < first_block_of_part(nblocks, parts, part + 1); ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
     tally.reset(nw);
-    double block_d2 = 0.0;
-    const long i_end = std::min(n, (b + 1) * kBlock);
-    for (long i = b * kBlock; i < i_end; ++i) {
-      pass.fetch_ahead(i);
-      Vec3 F{}, T{};
-      pass.pair_row(i, F, T, tally);
-      block_d2 = std::max(block_d2, pass.row_total(i, F, T, tally));
-    }
-    max_d2 = std::max(max_d2, block_d2);
+    max_d2 = std::max(max_d2, pass.sweep_rows(b * kBlock, std::min(n, (b + 1) * kBlock), tally));
   }
   // Pass 2: the parked particles (step 4).
   if (im.routing.parked() > 0) {
