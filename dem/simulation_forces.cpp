@@ -93,7 +93,7 @@ struct ForcePass {
   PeriodicZ pz;
   Vec3 g;
   double dt, limit;
-  bool relative_rolling, update_history;
+  bool relative_rolling, update_history, batched;
   long n, ahead;
   ParticleFinish finish;
 
@@ -159,9 +159,15 @@ struct ForcePass {
     });
   }
 
-#ifndef CENTREC_PAIR_BATCH
   // Steps 1-3 for rows i0 .. i1-1 (one block). Returns the largest squared displacement.
   CENTREC_INLINE double sweep_rows(long i0, long i1, BlockTally& tally) const {
+#ifdef CENTREC_PAIR_BATCH
+    if (batched) return sweep_rows_batched(i0, i1, tally);
+#endif
+    return sweep_rows_scalar(i0, i1, tally);
+  }
+
+  CENTREC_INLINE double sweep_rows_scalar(long i0, long i1, BlockTally& tally) const {
     double d2 = 0.0;
     for (long i = i0; i < i1; ++i) {
       fetch_ahead(i);
@@ -171,7 +177,7 @@ struct ForcePass {
     }
     return d2;
   }
-#else
+#ifdef CENTREC_PAIR_BATCH
   // Speed: steps 1-3 for rows i0 .. i1-1 (one block) with the contact law evaluated four
   // pairs at a time in AVX2 lanes (pair_batch_avx2.hpp), the lanes filled across row ends.
   // The contacts are collected in entry order (walk_row), evaluated when four are (and at
@@ -180,7 +186,7 @@ struct ForcePass {
   // Every sum, history, share and tally entry is thus made in the scalar order, pair_row
   // then row_total row by row: the same bits. Pending rows read only particles above the
   // rows totalled meanwhile, which their totals do not move.
-  CENTREC_INLINE double sweep_rows(long i0, long i1, BlockTally& tally) const {
+  CENTREC_INLINE double sweep_rows_batched(long i0, long i1, BlockTally& tally) const {
     pair_batch::PairRef batch[pair_batch::kLanes];
     struct Entry {
       long i;
@@ -404,7 +410,7 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
                  im.acc_t.data(),
                  walls_.data(), nw, wall_hist_.data(), im.wall_mask.data(),
                  pc_.data(), n_mat_, im.pz, cfg_.gravity, dt_, blowup_fraction_,
-                 cfg_.wall_rolling == WallRolling::relative, update_history,
+                 cfg_.wall_rolling == WallRolling::relative, update_history, cfg_.pair_batch,
                  n, im.list.reach + kPrefetchMargin, ParticleFinish{}};
   ParticleFinish& finish = pass.finish;
   finish.kick = after != AfterForces::nothing;

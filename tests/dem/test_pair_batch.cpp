@@ -1,7 +1,8 @@
 // The force pass's AVX2 pair batch (dem/pair_batch_avx2.hpp) against the scalar law
 // (pair_contact_input + evaluate_contact): every result the same bits, for random contacts
 // (overlaps, velocities and histories over decades, sliding and sticking, rolling capped
-// and not, mu_r = 0, mixed materials, batches of one to four pairs).
+// and not, mu_r = 0, mixed materials, batches of one to four pairs), and a film run with
+// the batch against the same run without it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 
 #include "dem/contact_law.hpp"
 #include "dem/pair_batch_avx2.hpp"
+#include "film_scene.hpp"
 
 using namespace centrec::dem;
 
@@ -168,6 +170,41 @@ TEST(PairBatch, PairBatchesAreScalarBitForBit) {
   std::printf("pair batches: %ld pairs compared bit for bit, %ld sliding\n", compared, slid);
   EXPECT_GT(slid, compared / 10);
   EXPECT_LT(slid, compared - compared / 10);
+}
+
+// The whole force pass: a settling film of 2000 particles, 1500 steps on 1 and 2 threads
+// with the batch and without (SimulationConfig::pair_batch): every particle's x, v, w,
+// every wall force and the contact count the same bits.
+TEST(PairBatch, FilmRunIsTheScalarRunBitForBit) {
+  for (const int threads : {1, 2}) {
+    std::vector<Vec3> state[2], walls[2];
+    std::size_t contacts[2] = {0, 0};
+    for (const bool batch : {true, false}) {
+      centrec::dem::testing::FilmScene scene;
+      scene.threads = threads;
+      scene.length = 6e-3;
+      SimulationConfig config = centrec::dem::testing::film_config(scene);
+      config.pair_batch = batch;
+      Simulation sim(config);
+      centrec::dem::testing::build_film(sim, scene, 2000);
+      sim.step(1500);
+      for (std::size_t i = 0; i < sim.size(); ++i)
+        for (const Vec3& u : {sim.positions()[i], sim.velocities()[i], sim.angular_velocities()[i]})
+          state[batch].push_back(u);
+      for (std::size_t w = 0; w < sim.wall_count(); ++w) walls[batch].push_back(sim.wall_force(static_cast<int>(w)));
+      contacts[batch] = sim.neighbour_stats().pair_contacts;
+    }
+    ASSERT_EQ(state[0].size(), state[1].size());
+    std::size_t differing = 0;
+    for (std::size_t k = 0; k < state[0].size(); ++k) differing += !same(state[0][k], state[1][k]);
+    std::printf("film, %d thread(s): %zu particles after 1500 steps, %zu pair contacts; %zu of %zu vectors differ\n",
+                threads, state[0].size() / 3, contacts[1], differing, state[0].size());
+    EXPECT_EQ(differing, 0u);
+    EXPECT_GT(contacts[1], 1000u);
+    EXPECT_EQ(contacts[0], contacts[1]);
+    ASSERT_EQ(walls[0].size(), walls[1].size());
+    for (std::size_t w = 0; w < walls[0].size(); ++w) EXPECT_TRUE(same(walls[0][w], walls[1][w]));
+  }
 }
 
 #else
