@@ -38,6 +38,17 @@ inline Vec3 contact_velocity(Vec3 v_rel, Vec3 w_i, Vec3 w_j, double arm_i, doubl
   return v_rel - cross(arm_i * w_i + arm_j * w_j, n);
 }
 
+// The input of the contact of particles a and c in canonical operand order (a the lower
+// id) from their separation sd = x_a - x_c (minimum image), its length dist and the
+// overlap delta = R_a + R_c - dist > 0.
+inline ContactInput pair_contact_input(Vec3 sd, double dist, double delta, double ra, double rc, double ma,
+                                       double mc, Vec3 va, Vec3 vc, Vec3 wa, Vec3 wc) {
+  const Vec3 nrm = (1.0 / dist) * sd;
+  const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
+  return {delta, nrm,         contact_velocity(va - vc, wa, wc, arm_a, arm_c, nrm), wa - wc, ra * rc / (ra + rc),
+          ma * mc / (ma + mc), arm_a, arm_c};
+}
+
 inline ContactResult evaluate_contact(const PairConstants& c, const ContactInput& in, const ContactHistory& old,
                                       double dt) {
   const HertzMindlinCoefficients k = hertz_mindlin_coefficients(c, in.delta, in.r_eff, in.m_eff);

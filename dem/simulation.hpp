@@ -57,6 +57,9 @@ struct SimulationConfig {
   DrumMotion drum;
   WallRolling wall_rolling = WallRolling::relative;
   int threads = 0;       // OpenMP threads; 0 = omp_get_max_threads()
+  // Speed only: where the build has the AVX2 pair batch (dem/pair_batch_avx2.hpp), false
+  // evaluates the pair contact law one pair at a time instead. The same bits either way.
+  bool pair_batch = true;
   bool verbose = true;  // print the time-step advice (one line) at set-up
 };
 

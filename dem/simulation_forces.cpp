@@ -1,7 +1,8 @@
 // The force pass of Simulation (docs/dem_physics.md): Hertz-Mindlin-EPSD2 for every
 // pair of the half neighbour list and every candidate wall, summed deterministically
 // (docs/architecture.md "Threads and determinism"). compute_forces works on ranges of
-// rows (one per thread), one row (particle i) at a time:
+// rows (one per thread), one row (particle i) at a time (ForcePass::sweep_rows; with AVX2
+// the contact law of four pairs at once, results applied in the same order):
 //   1. ForcePass::fetch_ahead   the data the rows ahead will read, into cache
 //   2. ForcePass::pair_row      the contacts of i with its partners j > i: the owner's
 //                               share summed at once, the partner's routed (route_share)
@@ -21,6 +22,7 @@
 
 #include "dem/contact_law.hpp"
 #include "dem/first_half_step.hpp"
+#include "dem/pair_batch_avx2.hpp"
 #include "dem/simulation_impl.hpp"
 
 // The pass's steps are inlined into its loops: no call per row or per list entry.
@@ -91,7 +93,7 @@ struct ForcePass {
   PeriodicZ pz;
   Vec3 g;
   double dt, limit;
-  bool relative_rolling, update_history;
+  bool relative_rolling, update_history, batched;
   long n, ahead;
   ParticleFinish finish;
 
@@ -144,8 +146,104 @@ struct ForcePass {
   // 2. The pairs of row i (partners j > i): the owner's share summed into F, T; the
   // partner's share routed. Each pair in canonical operand order (lower id first): the
   // result and the stored history do not depend on which of the two owns the row after a
-  // re-sort.
+  // re-sort. walk_row tests each entry for contact (forgetting separated ones) and hands
+  // the contacts on in entry order; apply_pair uses a contact's result.
   CENTREC_INLINE void pair_row(long i, Vec3& F, Vec3& T, BlockTally& tally) const {
+    walk_row(i, [&](std::uint32_t e, std::int32_t j, bool i_first, long a, long c, Vec3 sd, double dist2,
+                    double rsum) {
+      const double dist = std::sqrt(dist2);
+      const double delta = rsum - dist;
+      const ContactInput in = pair_contact_input(sd, dist, delta, R[a], R[c], M[a], M[c], V[a], V[c], Wv[a], Wv[c]);
+      const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
+      apply_pair(i, e, j, i_first, delta, res.force, res.torque_i, res.torque_j, res.history, F, T, tally);
+    });
+  }
+
+  // Steps 1-3 for rows i0 .. i1-1 (one block). Returns the largest squared displacement.
+  CENTREC_INLINE double sweep_rows(long i0, long i1, BlockTally& tally) const {
+#ifdef CENTREC_PAIR_BATCH
+    if (batched) return sweep_rows_batched(i0, i1, tally);
+#endif
+    return sweep_rows_scalar(i0, i1, tally);
+  }
+
+  CENTREC_INLINE double sweep_rows_scalar(long i0, long i1, BlockTally& tally) const {
+    double d2 = 0.0;
+    for (long i = i0; i < i1; ++i) {
+      fetch_ahead(i);
+      Vec3 F{}, T{};
+      pair_row(i, F, T, tally);
+      d2 = std::max(d2, row_total(i, F, T, tally));
+    }
+    return d2;
+  }
+#ifdef CENTREC_PAIR_BATCH
+  // Speed: steps 1-3 for rows i0 .. i1-1 (one block) with the contact law evaluated four
+  // pairs at a time in AVX2 lanes (pair_batch_avx2.hpp), the lanes filled across row ends.
+  // The contacts are collected in entry order (walk_row), evaluated when four are (and at
+  // the block's end, spare lanes repeating one), then applied in that order (apply_pair);
+  // a row is totalled (row_total) once the contacts of every row up to it are applied.
+  // Every sum, history, share and tally entry is thus made in the scalar order, pair_row
+  // then row_total row by row: the same bits. Pending rows read only particles above the
+  // rows totalled meanwhile, which their totals do not move.
+  CENTREC_INLINE double sweep_rows_batched(long i0, long i1, BlockTally& tally) const {
+    pair_batch::PairRef batch[pair_batch::kLanes];
+    struct Entry {
+      long i;
+      std::uint32_t e;
+      std::int32_t j;
+      bool i_first;
+    } entry[pair_batch::kLanes];
+    int count = 0;
+    double d2 = 0.0;
+    long next_total = i0, open = -1;  // the first row not totalled; the row whose sums F, T are open
+    Vec3 F{}, T{};
+    const auto total_until = [&](long end) {  // rows next_total .. end-1: all their contacts applied
+      for (; next_total < end; ++next_total) {
+        if (next_total != open) {
+          d2 = std::max(d2, row_total(next_total, Vec3{}, Vec3{}, tally));
+          continue;
+        }
+        d2 = std::max(d2, row_total(next_total, F, T, tally));
+        F = T = Vec3{};
+        open = -1;
+      }
+    };
+    const auto evaluate_batch = [&] {
+      pair_batch::PairResults r;
+      pair_batch::evaluate_pairs(batch, count, {V, Wv, R, M}, dt, r);
+      for (int k = 0; k < count; ++k) {
+        const Entry& en = entry[k];
+        if (en.i != open) {
+          total_until(en.i);
+          open = en.i;
+        }
+        apply_pair(en.i, en.e, en.j, en.i_first, r.delta[k], r.force[k], r.torque_a[k], r.torque_c[k],
+                   ContactHistory{r.shear[k], r.roll[k]}, F, T, tally);
+      }
+      count = 0;
+    };
+    for (long i = i0; i < i1; ++i) {
+      fetch_ahead(i);
+      walk_row(i, [&](std::uint32_t e, std::int32_t j, bool i_first, long a, long c, Vec3 sd, double dist2,
+                      double rsum) {
+        batch[count] = {sd, dist2, rsum, a, c, &hist[e], &pair(MAT[a], MAT[c])};
+        entry[count] = {i, e, j, i_first};
+        if (++count == pair_batch::kLanes) evaluate_batch();
+      });
+      if (count == 0) total_until(i + 1);
+    }
+    if (count > 0) evaluate_batch();
+    total_until(i1);
+    return d2;
+  }
+#endif
+
+  // The entries of row i in order: a separated pair is forgotten; for one in contact,
+  // contact(e, j, i_first, a, c, sd, dist2, rsum) with a, c the pair in canonical order,
+  // sd = x_a - x_c (minimum image), dist2 = |sd|^2 < rsum^2, rsum = R_i + R_j.
+  template <class Contact>
+  CENTREC_INLINE void walk_row(long i, Contact contact) const {
     const Vec3 xi = X[i];
     const double ri = R[i];
     const std::int64_t idi = ID[i];
@@ -159,41 +257,35 @@ struct ForcePass {
         if (touch[e]) forget(e);
         continue;
       }
-      const double dist = std::sqrt(dist2);
-      const double delta = rsum - dist;
-      if (!(delta <= limit * std::min(ri, R[j])))
-        tally.note_blow_up(i, xi, delta, [&] { return "particle id " + std::to_string(ID[j]); });
       const bool i_first = idi < ID[j];
-      const long a = i_first ? i : j, c = i_first ? j : i;
-      const double ra = R[a], rc = R[c], ma = M[a], mc = M[c];
-      const Vec3 nrm = (1.0 / dist) * (i_first ? d : -d);
-      const double arm_a = ra - 0.5 * delta, arm_c = rc - 0.5 * delta;
-      const ContactInput in{delta,
-                            nrm,
-                            contact_velocity(V[a] - V[c], Wv[a], Wv[c], arm_a, arm_c, nrm),
-                            Wv[a] - Wv[c],
-                            ra * rc / (ra + rc),
-                            ma * mc / (ma + mc),
-                            arm_a,
-                            arm_c};
-      const ContactResult res = evaluate_contact(pair(MAT[a], MAT[c]), in, hist[e], dt);
-      if (update_history) hist[e] = res.history;
-      Vec3 fj, tj;
-      if (i_first) {
-        F += res.force;
-        T += res.torque_i;
-        fj = -res.force;
-        tj = res.torque_j;
-      } else {
-        F -= res.force;
-        T += res.torque_j;
-        fj = res.force;
-        tj = res.torque_i;
-      }
-      route_share(e, j, fj, tj);
-      touch[e] = 1;
-      ++tally.pair_contacts;
+      contact(e, j, i_first, i_first ? i : j, i_first ? j : i, i_first ? d : -d, dist2, rsum);
     }
+  }
+
+  // The result of entry e's contact (i with j, overlap delta; force and torques of the
+  // pair in canonical order, a the lower id), in entry order: the overlap checked, the
+  // history stored, the owner's share summed into F, T, the partner's routed.
+  CENTREC_INLINE void apply_pair(long i, std::uint32_t e, long j, bool i_first, double delta, Vec3 force,
+                                 Vec3 torque_a, Vec3 torque_c, const ContactHistory& history, Vec3& F, Vec3& T,
+                                 BlockTally& tally) const {
+    if (!(delta <= limit * std::min(R[i], R[j])))
+      tally.note_blow_up(i, X[i], delta, [&] { return "particle id " + std::to_string(ID[j]); });
+    if (update_history) hist[e] = history;
+    Vec3 fj, tj;
+    if (i_first) {
+      F += force;
+      T += torque_a;
+      fj = -force;
+      tj = torque_c;
+    } else {
+      F -= force;
+      T += torque_c;
+      fj = force;
+      tj = torque_a;
+    }
+    route_share(e, j, fj, tj);
+    touch[e] = 1;
+    ++tally.pair_contacts;
   }
 
   // Speed: a pair that has just separated is forgotten (its history and parked share
@@ -318,7 +410,7 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
                  im.acc_t.data(),
                  walls_.data(), nw, wall_hist_.data(), im.wall_mask.data(),
                  pc_.data(), n_mat_, im.pz, cfg_.gravity, dt_, blowup_fraction_,
-                 cfg_.wall_rolling == WallRolling::relative, update_history,
+                 cfg_.wall_rolling == WallRolling::relative, update_history, cfg_.pair_batch,
                  n, im.list.reach + kPrefetchMargin, ParticleFinish{}};
   ParticleFinish& finish = pass.finish;
   finish.kick = after != AfterForces::nothing;
@@ -341,15 +433,7 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   for (long b = first_block_of_part(nblocks, parts, part); b < first_block_of_part(nblocks, parts, part + 1); ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
     tally.reset(nw);
-    double block_d2 = 0.0;
-    const long i_end = std::min(n, (b + 1) * kBlock);
-    for (long i = b * kBlock; i < i_end; ++i) {
-      pass.fetch_ahead(i);
-      Vec3 F{}, T{};
-      pass.pair_row(i, F, T, tally);
-      block_d2 = std::max(block_d2, pass.row_total(i, F, T, tally));
-    }
-    max_d2 = std::max(max_d2, block_d2);
+    max_d2 = std::max(max_d2, pass.sweep_rows(b * kBlock, std::min(n, (b + 1) * kBlock), tally));
   }
   // Pass 2: the parked particles (step 4).
   if (im.routing.parked() > 0) {
