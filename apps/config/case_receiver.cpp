@@ -47,6 +47,9 @@ ReceiverCase read_receiver(MapReader r, MapReader dem) {
       r.fail("dem_diameter_d", "derives the DEM mass flow by eq 2, but dem.feeder.mass_flow is also given");
     if (dem.child("slice").has("target_mass_flow"))
       r.fail("dem_diameter_d", "derives the DEM mass flow by eq 2, but dem.slice.target_mass_flow is also given");
+    for (const char* key : {"diameter", "length", "speed_rpm", "tilt_deg"}) drum.drop_resolved(key);
+    dem.child("feeder").drop_resolved("mass_flow");
+    dem.child("slice").drop_resolved("target_mass_flow");
   }
   return c;
 }

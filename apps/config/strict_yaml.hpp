@@ -94,6 +94,11 @@ class MapReader {
   // check their own.
   void finish() const;
 
+  // Takes `key` out of the resolved configuration: its value is derived from another
+  // section (receiver.dem_diameter_d derives dem.drum), so echoing the reader's default
+  // would misstate the run, and reading the echo back would count it as given.
+  void drop_resolved(const std::string& key) { resolved_here_.remove(key); }
+
   // The full resolved configuration (all readers of this file share it).
   YAML::Node resolved() const { return shared_->resolved; }
   std::string resolved_text() const;

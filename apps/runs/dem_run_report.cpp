@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "coupling/scaling_laws.hpp"
 #include "dem/film/steady_state.hpp"
 #include "dem/scene/mass_flow_window.hpp"
 #include "io/atomic_write.hpp"
@@ -47,6 +48,11 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
   j["case"] = cf.path;
   j["title"] = cf.title;
   j["mode"] = dc.scene.slice.enabled ? "slice" : "drum";
+  // The drum that ran: a receiver case derives it, and then the resolved configuration omits it.
+  j["drum_diameter_m"] = dc.scene.drum.diameter;
+  j["drum_length_m"] = dc.scene.drum.length;
+  j["drum_speed_rpm"] = coupling::rad_per_s_to_rpm(dc.scene.drum.omega);
+  j["drum_tilt_deg"] = dc.scene.drum.tilt * 180.0 / M_PI;
   j["simulated_time_s"] = r.simulated_time;
   j["turns"] = r.simulated_time / period;
   j["dt_s"] = r.dt;

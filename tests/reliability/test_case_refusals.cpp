@@ -5,6 +5,7 @@
 // and `run` refuse.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -12,6 +13,7 @@
 
 #include "config/case_checks.hpp"
 #include "config/case_file.hpp"
+#include "dem/scene/scene_config.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/h5_file.hpp"
 #include "tests/test_case_dir.hpp"
@@ -142,6 +144,36 @@ TEST(CaseRefusals, TheDemOfAReceiverCaseIsTheDerivedDrum) {
   EXPECT_NEAR(d.scene.drum.diameter, cf.receiver->dem_diameter_d * d.scene.particle.diameter, 1e-12);
   EXPECT_EQ(cf.receiver->dem_diameter_d, 80.0);  // the case derives its DEM at the validity threshold
   EXPECT_NE(d.scene.drum.diameter, cf.dem->scene.drum.diameter);
+}
+
+TEST(CaseRefusals, AReceiverCaseReadsBackFromItsResolvedConfiguration) {
+  // --threads / --duration rewrite the resolved configuration and read it again, and a
+  // checkpoint resumes from it: the drum and flow that receiver.dem_diameter_d derives must
+  // not come back as if given (they would clash with it), nor be echoed with the reader's
+  // defaults (D12's 0.12 m where the DEM runs 0.096 m).
+  const config::CaseFile cf = config::read_case_file(CENTREC_SOURCE_DIR "/cases/quickstart.yaml");
+  const YAML::Node resolved = YAML::Load(cf.resolved_yaml);
+  for (const char* key : {"diameter", "length", "speed_rpm", "tilt_deg"})
+    EXPECT_FALSE(resolved["dem"]["drum"][key].IsDefined()) << "dem.drum." << key << " echoed though derived";
+  EXPECT_FALSE(resolved["dem"]["slice"]["target_mass_flow"].IsDefined());
+  EXPECT_FALSE(resolved["dem"]["feeder"]["mass_flow"].IsDefined());
+  EXPECT_EQ(config::read_case_text(cf.resolved_yaml, cf.path).resolved_yaml, cf.resolved_yaml);
+
+  config::Overrides o;
+  o.threads = 2;
+  o.duration = 0.5;
+  config::CaseFile with;
+  ASSERT_NO_THROW(with = config::with_overrides(cf, o));
+  const YAML::Node run = YAML::Load(with.resolved_yaml)["dem"]["run"];
+  EXPECT_EQ(run["threads"].as<int>(), 2);
+  EXPECT_DOUBLE_EQ(run["duration"].as<double>(), 0.5);
+  const config::DemCase a = config::effective_dem(*cf.dem, &*cf.receiver, {});
+  const config::DemCase b = config::effective_dem(*with.dem, &*with.receiver, {});
+  EXPECT_EQ(a.scene.drum.diameter, b.scene.drum.diameter);
+  EXPECT_EQ(a.scene.drum.omega, b.scene.drum.omega);
+  EXPECT_EQ(dem::scene::target_mass_flow(a.scene), dem::scene::target_mass_flow(b.scene));
+  std::printf("quickstart with --threads 2 --duration 0.5: DEM drum %.4f m, %.3f rad/s, %.5f kg/s\n",
+              b.scene.drum.diameter, b.scene.drum.omega, dem::scene::target_mass_flow(b.scene));
 }
 
 TEST(CaseRefusals, AFilmFileWithAbsurdVelocitiesIsRefused) {

@@ -85,8 +85,11 @@ TEST(CaseKeys, EachKeyHasItsTypeDefaultAndRange) {
   EXPECT_EQ(find("receiver.mass_flow").default_value, "required");
   EXPECT_EQ(find("receiver.particle_diameter").default_value, "(none)");
   // Keys only a branch reads are there, and say which branch.
-  for (const auto& k : keys)
-    if (k.key.path == "thermal.flux.q_peak") EXPECT_EQ(k.when, "thermal.flux.profile: gaussian");
+  for (const auto& k : keys) {
+    if (k.key.path == "thermal.flux.q_peak") {
+      EXPECT_EQ(k.when, "thermal.flux.profile: gaussian");
+    }
+  }
   EXPECT_EQ(find("film.file").type, "text");
   EXPECT_EQ(find("thermal.transient.mass_flow.t_end").unit, "s");
 }
