@@ -48,6 +48,14 @@ def load(d):
     return s, y, u, su, theta
 
 
+def flux_weighted_difference(u, u_ref, phi_ref):
+    """sum |u - u_ref| phi / sum |u_ref| phi over the bins sampled in both profiles of one
+    arc, phi the reference's solid fraction per bin: the share of the axial mass flux the
+    two profiles disagree on."""
+    w = np.where(np.isfinite(u) & np.isfinite(u_ref), np.nan_to_num(phi_ref), 0.0)
+    return float(np.sum(np.abs(np.nan_to_num(u - u_ref)) * w) / np.sum(np.abs(np.nan_to_num(u_ref)) * w))
+
+
 def main(ref, dirs):
     sr, yr, ur, sur, theta = load(ref)
     rows, film_rows = [], []
@@ -65,14 +73,14 @@ def main(ref, dirs):
             infilm = both & (yr < sr["mean_film_thickness_d"])
             diff = (u[a] - ur[a])[infilm]
             noise = np.sqrt(su[a][infilm] ** 2 / n_turns + sur[a][infilm] ** 2 / n_ref)
-            w = np.where(both, np.nan_to_num(sr["phi"]), 0.0)
-            flux = np.sum(np.abs(np.nan_to_num(u[a] - ur[a])) * w) / np.sum(np.abs(np.nan_to_num(ur[a])) * w)
+            flux = flux_weighted_difference(u[a], ur[a], sr["phi"])
             film_dev.append((np.max(np.abs(diff)) / peak, np.sqrt(np.mean(diff ** 2)) / peak,
                              np.max(noise) / peak, flux) if infilm.any() else (np.nan,) * 4)
         film_rows.append((os.path.basename(d.rstrip("/")), film_dev))
         t = s["mean_film_thickness_d"]
         cfg = yaml.safe_load(s["resolved_config"])["dem"]
-        dd = cfg["drum"]["diameter"] / cfg["particles"]["diameter"]
+        # a receiver-derived drum is in summary.json only (the resolved case leaves it out)
+        dd = s.get("drum_diameter_m", cfg["drum"].get("diameter")) / cfg["particles"]["diameter"]
         # eq 2 keeps mdot / R: the slice's flux scaled back to D12 (D/d = 100), paper 35.7 g/s
         mdot = s.get("slice_mdot_kg_s")
         flow = f"{1e3 * mdot:.2f} | {1e3 * mdot * 100 / dd:.1f}" if mdot else "- | -"

@@ -40,7 +40,7 @@ import yaml
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "docs", "scale_down"))
-from compare_slices import load  # noqa: E402  (one reader of a run's film)
+from compare_slices import flux_weighted_difference, load  # noqa: E402  (one reader, one metric)
 
 BASE = os.path.join(ROOT, "cases", "quickstart.yaml")
 DT0, E0 = 2.0e-5, 5.0e6
@@ -111,12 +111,7 @@ def run(runs, threads, names, cases):
 def figures(d, ref):
     s, y, u, su, _ = load(d)
     sr, yr, ur, _, _ = load(ref)
-    w_ref = np.nan_to_num(sr["phi"])
-    flux = []
-    for a in range(u.shape[0]):
-        both = np.isfinite(u[a]) & np.isfinite(ur[a])
-        w = np.where(both, w_ref, 0.0)
-        flux.append(float(np.sum(np.abs(np.nan_to_num(u[a] - ur[a])) * w) / np.sum(np.abs(np.nan_to_num(ur[a])) * w)))
+    flux = [flux_weighted_difference(u[a], ur[a], sr["phi"]) for a in range(u.shape[0])]
     cfg = yaml.safe_load(s["resolved_config"])["dem"]
     cfg_r = yaml.safe_load(sr["resolved_config"])["dem"]
     per_len = s["free_particles"] / cfg["slice"]["length_d"]
