@@ -27,7 +27,7 @@ void print_run_help() {
   std::printf(
       "usage: centrec run CASE.yaml --out DIR [--cache DIR] [--speed-rpm N] [--mass-flow KG_S]\n"
       "                  [--threads N] [--seed N] [--replicas N] [--no-plots] [--allow-small-drum]\n"
-      "                  [--allow-unsteady]\n\n"
+      "                  [--allow-unsteady] [--dem-from DEM_DIR]\n\n"
       "The coupled run (docs/architecture.md): the DEM of the case's `dem:` drum or slice\n"
       "(derived from `receiver:` by eqs 1-3 when receiver.dem_diameter_d is given), run until\n"
       "its flow is steady; its film as measured (full-circumference profiles per section, cut\n"
@@ -46,7 +46,10 @@ void print_run_help() {
       "its validity).\n"
       "The DEM outputs are cached in CACHE/<hash of every DEM input> (default: the parent of\n"
       "DIR + /dem-cache): a thermal-only change reruns in seconds. A case with `film: {file:}`\n"
-      "skips the DEM. --speed-rpm and --mass-flow replace the receiver's operating point (or\n"
+      "skips the DEM; so does --dem-from DEM_DIR, the folder of a finished `centrec dem CASE`\n"
+      "run of the same DEM inputs (the dem: and receiver: sections; the thread count may\n"
+      "differ), whose dem.h5 gives the film (a mismatch is refused, naming the keys).\n"
+      "--speed-rpm and --mass-flow replace the receiver's operating point (or\n"
       "the DEM drum's, without a receiver); `centrec sweep` uses them. --seed replaces\n"
       "dem.seed.\n"
       "--replicas N runs the whole chain N times, with DEM seeds dem.seed, dem.seed + 1, ...,\n"
@@ -158,6 +161,7 @@ int cmd_run(const Args& args) {
   app.add_option("--seed", o.seed)->check(integer_in(0, 2147483647));
   int replicas = 1;
   app.add_option("--replicas", replicas)->check(integer_in(1, 64));
+  app.add_option("--dem-from", o.dem_from);
   app.add_flag("--no-plots", no_plots);
   app.add_flag("--allow-small-drum", o.allow_small_drum,
                "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
@@ -169,6 +173,8 @@ int cmd_run(const Args& args) {
   const config::CaseFile cf = config::read_case_file(case_path);
   const config::Overrides overrides = runs::run_overrides(o);
   if (cf.dem && cf.thermal && cf.thermal->film_source == "dem") checked_dem(cf, overrides);
+  if (replicas > 1 && !o.dem_from.empty())
+    throw UsageError("--replicas runs the DEM with other seeds; --dem-from takes one earlier run: give one of them");
   if (replicas > 1) return run_replicas(args, case_path, out_dir, cf, o, replicas, no_plots);
   const io::OutputFolder out(out_dir);
   runs::CoupledRun r;
@@ -190,7 +196,7 @@ int cmd_run(const Args& args) {
   std::printf("centrec run %s\n", case_path.c_str());
   if (r.film_from_dem) {
     const auto& sd = r.dem.scene;
-    std::printf("  DEM %s (%s): %s D = %.4g m (D/d %.0f), %.2f rpm\n", r.dem_cached ? "from cache" : "run",
+    std::printf("  DEM %s (%s): %s D = %.4g m (D/d %.0f), %.2f rpm\n", r.dem_given ? "from an earlier run" : r.dem_cached ? "from cache" : "run",
                 r.dem_dir.c_str(), sd.slice.enabled ? "slice of the drum" : "drum", sd.drum.diameter,
                 sd.drum.diameter / sd.particle.diameter, coupling::rad_per_s_to_rpm(sd.drum.omega));
     std::printf("  DEM steady state: %s\n", r.averages.steady_text.c_str());

@@ -78,6 +78,7 @@ nlohmann::json coupled_summary(const CoupledRun& r) {
   const auto& m = r.imposed;
   const auto& sd = r.dem.scene;
   j["dem"] = {{"cached", r.dem_cached},
+              {"given", r.dem_given},
               {"resumed_from", r.dem_resumed_from},
               {"cache_key", r.cache_key},
               {"dir", r.dem_dir},

@@ -15,6 +15,7 @@
 #include "io/summary_json.hpp"
 #include "runs/dem_cache.hpp"
 #include "runs/dem_case_run.hpp"
+#include "runs/earlier_dem_run.hpp"
 
 namespace centrec::runs {
 
@@ -73,6 +74,9 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
   CoupledRun r;
   r.thermal = *cf.thermal;
   r.film_from_dem = r.thermal.film_source == "dem";
+  if (!o.dem_from.empty() && (!r.film_from_dem || o.speed_rpm > 0.0 || o.mass_flow > 0.0 || o.seed >= 0))
+    throw std::invalid_argument(cf.path + ": --dem-from takes the film of an earlier DEM run as it ran; it goes with "
+                                          "neither a case without a DEM film nor --speed-rpm, --mass-flow or --seed");
   if (!r.film_from_dem && (o.speed_rpm > 0.0 || o.mass_flow > 0.0))
     throw std::invalid_argument(cf.path + ": --speed-rpm / --mass-flow change the DEM, but this case takes its film "
                                           "from " + r.thermal.film_source + " (no DEM to rerun)");
@@ -86,18 +90,25 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
       throw std::invalid_argument(cf.path + ": dem.sampling.turns must be > 0: the coupling needs film fields");
     // 1. DEM, or its cached outputs.
     const auto t0 = std::chrono::steady_clock::now();
-    r.cache_key = dem_cache_key(resolved_dem_section(cf), r.dem, centrec::io::code_version());
-    // A DEM run now hands its film over in memory; a cached one is read back from its dem.h5.
+    // A DEM run now hands its film over in memory; a cached or given one is read back from
+    // its dem.h5.
     std::optional<io::DemRunResult> ran;
-    const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key, [&](const std::string& dir, bool resume) {
-      if (resume) std::fprintf(stderr, "centrec run: continuing the interrupted DEM run in %s\n", dir.c_str());
-      ran = run_dem_case(cf, r.dem, dir,
-                         native_engine(resume ? std::optional<io::RunCheckpoint>(io::read_checkpoint(dir)) : std::nullopt));
-    });
-    r.dem_dir = cached.dir;
-    r.dem_cached = cached.hit;
-    r.dem_resumed_from = cached.resumed_from;
-    r.dem_summary = io::read_json_file(r.dem_dir + "/summary.json");
+    if (!o.dem_from.empty()) {
+      r.dem_given = true;
+      r.dem_dir = o.dem_from;
+      r.dem_summary = earlier_dem_run_summary(cf.resolved_yaml, o.dem_from);
+    } else {
+      r.cache_key = dem_cache_key(resolved_dem_section(cf), r.dem, centrec::io::code_version());
+      const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key, [&](const std::string& dir, bool resume) {
+        if (resume) std::fprintf(stderr, "centrec run: continuing the interrupted DEM run in %s\n", dir.c_str());
+        ran = run_dem_case(cf, r.dem, dir,
+                           native_engine(resume ? std::optional<io::RunCheckpoint>(io::read_checkpoint(dir)) : std::nullopt));
+      });
+      r.dem_dir = cached.dir;
+      r.dem_cached = cached.hit;
+      r.dem_resumed_from = cached.resumed_from;
+      r.dem_summary = io::read_json_file(r.dem_dir + "/summary.json");
+    }
     r.dem_seconds = since(t0);
     // 2. Mapping, scale-up, mass-flux conservation.
     const auto t1 = std::chrono::steady_clock::now();

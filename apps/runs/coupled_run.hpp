@@ -5,7 +5,8 @@
 // the film as measured, full circumference (coupling/film_mapping) -> its flux closure
 // against the DEM's measured flow (coupling/film_mass_flow) -> scale-up to the receiver
 // (coupling/film_scale_up) -> the case's mass flow imposed by one factor -> thermal steady
-// state (and transient). A case that gives `film: {file: ...}` skips the DEM.
+// state (and transient). A case that gives `film: {file: ...}` skips the DEM; so does a
+// run given an earlier DEM-only run of the same DEM inputs (runs/earlier_dem_run.hpp).
 // Refused unless allowed (then carried as warnings): a DEM drum below the scale-down
 // validity threshold, a DEM not at steady flow, a flux closure off by more than 5 %.
 #include <nlohmann/json.hpp>
@@ -30,6 +31,7 @@ struct RunOptions {
   long long seed = -1;        // >= 0: the DEM's random seed instead of dem.seed (a replica)
   bool allow_small_drum = false;  // run a DEM drum below coupling::kMinimumDrumDiameterOverD
   bool allow_unsteady = false;    // use a film that is not steady or fails the flux closure
+  std::string dem_from;  // a finished `centrec dem` run of the same DEM inputs: its dem.h5, no DEM run
 };
 
 struct CoupledRun {
@@ -39,6 +41,7 @@ struct CoupledRun {
   bool film_from_dem = false;      // false: the case's film file was used, no DEM
   std::string dem_dir, cache_key;  // where dem.h5 came from
   bool dem_cached = false;
+  bool dem_given = false;          // taken from RunOptions::dem_from
   std::string dem_resumed_from;  // the killed run's cache folder this run continued ("" = none)
   nlohmann::json dem_summary;
   coupling::DemFilmAverages averages;

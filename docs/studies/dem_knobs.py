@@ -17,14 +17,17 @@ Figures per run (the controlled slice's flow is held at the target by its contro
 flow is not an accuracy figure; what the knob moves is the film that carries it): film
 thickness (eqs 4-7) minus the reference's, in d; the flux-weighted velocity profile
 difference over the three arcs (sum |u - u_ref| phi / sum |u_ref| phi, docs/scale_down.md);
-free holdup per length against the reference's; the slice's flow against the target; and the
-cost: particle-steps and wall time (all runs on the same thread count).
+free holdup per length against the reference's; the slice's flow against the target; the
+answer of the whole chain on that DEM film (`centrec run --dem-from`: film mapped, scaled up to
+the receiver, heated by the quickstart's thermal section): T_out and k_eff against the
+reference's; and the cost: particle-steps and wall time.
 
 usage:
   dem_knobs.py cases [--out cases/knobs]          write the case files
   dem_knobs.py run [--threads N] RUNS_DIR [NAME..] run the missing ones (resumable: a run with
                                                    a summary.json is skipped, a killed one resumed
-                                                   from its checkpoint)
+                                                   from its checkpoint), then the coupled chain
+                                                   on each finished one
   dem_knobs.py compare RUNS_DIR OUT_DIR            table.md, results.json, knobs.png
 """
 import argparse
@@ -82,7 +85,8 @@ def write_cases(out):
     base = yaml.safe_load(open(BASE))
     points, edits = variants()
     for name, edit in edits.items():
-        case = {"title": f"knobs_{name}", "receiver": base["receiver"], "dem": json.loads(json.dumps(base["dem"]))}
+        case = {"title": f"knobs_{name}", "receiver": base["receiver"], "dem": json.loads(json.dumps(base["dem"])),
+                "thermal": base["thermal"]}
         edit(case["dem"])
         what = ", ".join(f"{k} = {v:g}{' (the reference of this knob)' if r else ''}" for k, v, n, r in points if n == name)
         text = (f"# DEM knob study (docs/dem_knobs.md; written by docs/studies/dem_knobs.py cases):\n"
@@ -106,6 +110,23 @@ def run(runs, threads, names, cases):
         print(" ".join(cmd), flush=True)
         with open(out + ".log", "a") as log:
             subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT, check=True)
+    coupled(runs, names, cases)
+
+
+def coupled(runs, names, cases):
+    """The rest of the chain on each finished DEM run: `centrec run --dem-from` maps its film,
+    scales it up to the receiver and heats it (the quickstart's thermal section), so every knob
+    is also read in the figures a user takes away (T_out, efficiency, k_eff). Seconds each."""
+    exe = os.path.join(ROOT, "build", "centrec")
+    for name in names or list(variants()[1]):
+        dem, out = os.path.join(runs, name), os.path.join(runs, name, "coupled")
+        if not os.path.exists(os.path.join(dem, "summary.json")) or os.path.exists(os.path.join(out, "summary.json")):
+            continue
+        cmd = [exe, "run", os.path.join(cases, name + ".yaml"), "--dem-from", dem, "--out", out, "--no-plots",
+               "--allow-unsteady"]
+        print(" ".join(cmd), flush=True)
+        with open(out + ".log", "w") as log:
+            subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT, check=True)
 
 
 def figures(d, ref):
@@ -115,6 +136,14 @@ def figures(d, ref):
     cfg = yaml.safe_load(s["resolved_config"])["dem"]
     cfg_r = yaml.safe_load(sr["resolved_config"])["dem"]
     per_len = s["free_particles"] / cfg["slice"]["length_d"]
+    chain = {}
+    c, cr = (os.path.join(x, "coupled", "summary.json") for x in (d, ref))
+    if os.path.exists(c) and os.path.exists(cr):  # the rest of the chain (`run` finishes it)
+        c, cr = json.load(open(c)), json.load(open(cr))
+        chain = {"T_out_K": c["T_out_K"], "T_out_error_K": c["T_out_K"] - cr["T_out_K"],
+                 "efficiency": c["efficiency"], "k_eff": c["k_eff"]["film_mean"]["k_eff"],
+                 "k_eff_error": c["k_eff"]["film_mean"]["k_eff"] / cr["k_eff"]["film_mean"]["k_eff"] - 1.0,
+                 "flow_closure": c["coupling"]["flow_closure_mean"], "chain_warnings": c["warnings"]}
     per_len_r = sr["free_particles"] / cfg_r["slice"]["length_d"]
     return {
         "thickness_d": s["mean_film_thickness_d"],
@@ -131,6 +160,7 @@ def figures(d, ref):
         "wall_time_s": s["wall_time_s"],
         "dt_s": s["dt_s"],
         "threads": s["threads"],
+        **chain,
     }
 
 
@@ -151,11 +181,14 @@ def compare(runs, out):
         res[f"{knob}={value:g}"] = r
     json.dump(res, open(os.path.join(out, "results.json"), "w"), indent=1)
     lines = ["| knob = value | run | vs | thickness [d] | error [d] | profile error 45 / 90 / 135 deg | free per d | holdup error "
-             "| slice flow [g/s] | dt [s] | particle-steps | wall [s] (threads) |", "|" + "---|" * 12]
+             "| slice flow [g/s] | T_out [K] (error) | k_eff (error) | dt [s] | particle-steps | wall [s] (threads) |",
+             "|" + "---|" * 14]
     for name, r in res.items():
         lines.append(f"| {name} | {r['run']} | {r['reference']} | {r['thickness_d']:.2f} +- {r['thickness_std_d']:.2f} "
                      f"| {r['thickness_error_d']:+.2f} | " + " / ".join(f"{100 * x:.1f}" for x in r["profile_error"])
                      + f" % | {r['free_per_d']:.0f} | {100 * r['holdup_error']:+.1f} % | {r['slice_flow_g_s']:.2f} "
+                     + (f"| {r['T_out_K']:.2f} ({r['T_out_error_K']:+.2f}) | {r['k_eff']:.4f} ({100 * r['k_eff_error']:+.1f} %) "
+                        if "T_out_K" in r else "| - | - ") +
                      f"| {r['dt_s']:.3g} | {r['particle_steps']:.3g} | {r['wall_time_s']:.0f} ({r['threads']}) |")
     open(os.path.join(out, "table.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -165,23 +198,25 @@ def compare(runs, out):
         import matplotlib.pyplot as plt
     except ImportError:
         return
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.5))
+    fig, axes = plt.subplots(1, 4, figsize=(19, 4.5))
     marks = {"dt": "o", "E": "s", "skin": "^", "length": "D", "seed": "*"}
     for knob, m in marks.items():
-        pts = [(r["particle_steps"], abs(r["thickness_error_d"]), r["profile_error_mean"], abs(r["holdup_error"]), n)
+        pts = [(r["particle_steps"], abs(r["thickness_error_d"]), r["profile_error_mean"], abs(r["holdup_error"]),
+                abs(r.get("T_out_error_K", float("nan"))), n)
                for n, r in res.items() if r["knob"] == knob and r["run"] != r["reference"]]
         if not pts:
             continue
-        c, t, p, h, names = zip(*pts)
-        for ax, val in zip(axes, (t, [100 * x for x in p], [100 * x for x in h])):
+        c, t, p, h, T, names = zip(*pts)
+        for ax, val in zip(axes, (t, [100 * x for x in p], [100 * x for x in h], T)):
             ax.scatter(c, val, marker=m, s=60, label=knob)
             for ci, vi, ni in zip(c, val, names):
                 ax.annotate(ni, (ci, vi), fontsize=7, xytext=(3, 3), textcoords="offset points")
     noise = res.get("seed=2")
     for ax, key, scale, title in ((axes[0], "thickness_error_d", 1, "|thickness error| [d]"),
                                   (axes[1], "profile_error_mean", 100, "flux-weighted profile error [%]"),
-                                  (axes[2], "holdup_error", 100, "|holdup error| at the target flow [%]")):
-        if noise:
+                                  (axes[2], "holdup_error", 100, "|holdup error| at the target flow [%]"),
+                                  (axes[3], "T_out_error_K", 1, "|T_out error| of the coupled chain [K]")):
+        if noise and key in noise:
             ax.axhline(abs(noise[key]) * scale, color="grey", ls="--", lw=1, label="seed noise")
         ax.set_xscale("log")
         ax.set_xlabel("cost: particle-steps of the run")

@@ -3,7 +3,8 @@
 // the stored outlet temperature within 1 K; a rerun takes the cached DEM and gives an
 // identical result; a thermal-only change reuses the DEM; the outputs carry the film and the
 // scaling; the stored film.h5 reruns the thermal part alone with the same answer; mismatched
-// particles between DEM and thermal are refused.
+// particles between DEM and thermal are refused; an earlier DEM-only run of the same inputs
+// (--dem-from) gives the same answer, one of other inputs is refused.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -15,6 +16,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 #include "config/case_file.hpp"
 #include "io/code_version.hpp"
@@ -128,6 +130,33 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
   std::printf("flux 3e5: cached %d, T_out %.2f K\n", h.dem_cached, h.result.balance.T_out);
   EXPECT_TRUE(h.dem_cached);
   EXPECT_GT(h.result.balance.T_out, T1 + 10.0);
+
+  // An earlier DEM run given by --dem-from (here the cache entry, which holds what
+  // `centrec dem` writes): the same answer without DEM work or cache; another thread count is
+  // the same DEM; a changed DEM input is refused, naming the key and both values.
+  RunOptions given = o;
+  given.dem_from = entry;
+  given.cache_dir = dir + "/no-cache";
+  const CaseFile more_threads = edited_case(dir, "threads: 1", "threads: 2");
+  const CoupledRun g = run_coupled_case(more_threads, given);
+  std::printf("from the earlier run %s: T_out %.6f K (coupled %.6f K)\n", g.dem_dir.c_str(), g.result.balance.T_out,
+              T1);
+  EXPECT_TRUE(g.dem_given);
+  EXPECT_EQ(g.result.balance.T_out, T1);
+  EXPECT_FALSE(fs::exists(given.cache_dir));
+  for (const auto& [from, to, key] : {std::tuple<const char*, const char*, const char*>{"dt: 2.0e-5", "dt: 1.0e-5",
+                                                                                          "dem.run.dt: 1e-05 here, 2e-05"},
+                                      {"dem_diameter_d: 21", "dem_diameter_d: 22", "receiver.dem_diameter_d: 22 here"}}) {
+    try {
+      run_coupled_case(edited_case(dir, from, to), given);
+      ADD_FAILURE() << "a run of other DEM inputs (" << to << ") was taken";
+    } catch (const std::invalid_argument& e) {
+      std::printf("%s\n", e.what());
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+  given.seed = 7;
+  EXPECT_THROW(run_coupled_case(cf, given), std::invalid_argument);
 
   // Outputs: results.h5 with /film and /coupling, film.h5 reusable, summary figures.
   write_coupled_h5(dir, first, case_provenance(cf.path, cf.resolved_yaml));
