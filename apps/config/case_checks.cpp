@@ -79,7 +79,10 @@ std::string time_step_statement(const dem::TimeStepAdvice& a, double dt_given) {
   return "dt = " + g(dt_given) + " s from run.dt: within the stability bound " + g(a.stable_bound) +
          " s (the smaller of 0.5 x Rayleigh time and 0.2 x Hertz time; " + g(a.hertz_time / dt_given) +
          " steps per fastest collision); the recommended " + g(a.recommended) +
-         " s (0.1 x the shorter time) is the default without run.dt";
+         " s (0.1 x the shorter time) is the default without run.dt" +
+         (dt_given > a.recommended ? "; above it the film's thickness and k_eff carry a step error, the outlet "
+                                     "temperature little (docs/dem_knobs.md)"
+                                   : "");
 }
 
 std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived) {

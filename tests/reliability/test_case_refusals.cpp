@@ -135,6 +135,10 @@ TEST(CaseRefusals, TheTimeStepAdviceMatchesTheEngines) {
   EXPECT_NEAR(a.recommended, 8.763e-6, 0.001e-6);
   const std::string said = config::time_step_statement(a, 2e-5);
   EXPECT_HAS(said, "dt = 2e-05 s from run.dt: within the stability bound 3.237e-05 s");
+  // Above the recommended step the statement says what the knob study measured it costs.
+  EXPECT_HAS(said, "step error");
+  EXPECT_HAS(said, "docs/dem_knobs.md");
+  EXPECT_EQ(config::time_step_statement(a, 5e-6).find("step error"), std::string::npos);
 }
 
 TEST(CaseRefusals, TheDemOfAReceiverCaseIsTheDerivedDrum) {
