@@ -196,8 +196,9 @@ int cmd_run(const Args& args) {
   std::printf("centrec run %s\n", case_path.c_str());
   if (r.film_from_dem) {
     const auto& sd = r.dem.scene;
-    std::printf("  DEM %s (%s): %s D = %.4g m (D/d %.0f), %.2f rpm\n", r.dem_given ? "from an earlier run" : r.dem_cached ? "from cache" : "run",
-                r.dem_dir.c_str(), sd.slice.enabled ? "slice of the drum" : "drum", sd.drum.diameter,
+    const char* source = r.dem_given ? "from an earlier run" : r.dem_cached ? "from cache" : "run";
+    std::printf("  DEM %s (%s): %s D = %.4g m (D/d %.0f), %.2f rpm\n", source, r.dem_dir.c_str(),
+                sd.slice.enabled ? "slice of the drum" : "drum", sd.drum.diameter,
                 sd.drum.diameter / sd.particle.diameter, coupling::rad_per_s_to_rpm(sd.drum.omega));
     std::printf("  DEM steady state: %s\n", r.averages.steady_text.c_str());
     std::printf("  film as measured: %.2f d thick where phi >= %.2g (%.1f-%.1f %% of the DEM's flow inside); "

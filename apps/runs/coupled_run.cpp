@@ -101,8 +101,8 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
       r.cache_key = dem_cache_key(resolved_dem_section(cf), r.dem, centrec::io::code_version());
       const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key, [&](const std::string& dir, bool resume) {
         if (resume) std::fprintf(stderr, "centrec run: continuing the interrupted DEM run in %s\n", dir.c_str());
-        ran = run_dem_case(cf, r.dem, dir,
-                           native_engine(resume ? std::optional<io::RunCheckpoint>(io::read_checkpoint(dir)) : std::nullopt));
+        const auto from = resume ? std::optional<io::RunCheckpoint>(io::read_checkpoint(dir)) : std::nullopt;
+        ran = run_dem_case(cf, r.dem, dir, native_engine(from));
       });
       r.dem_dir = cached.dir;
       r.dem_cached = cached.hit;

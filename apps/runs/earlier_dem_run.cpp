@@ -40,7 +40,8 @@ std::map<std::string, std::string> dem_inputs(const std::string& resolved_yaml) 
 nlohmann::json earlier_dem_run_summary(const std::string& case_resolved_yaml, const std::string& dir) {
   for (const char* file : {"dem.h5", "summary.json"})
     if (!std::filesystem::exists(dir + "/" + file))
-      throw std::invalid_argument(dir + " has no " + file + ": --dem-from takes the folder of a finished `centrec dem` run");
+      throw std::invalid_argument(dir + " has no " + file +
+                                  ": --dem-from takes the folder of a finished `centrec dem` run");
   nlohmann::json summary = io::read_json_file(dir + "/summary.json");
   if (!summary.contains("resolved_config") || !summary["resolved_config"].is_string())
     throw std::invalid_argument(dir + "/summary.json has no resolved_config: not a `centrec dem` run's summary");
