@@ -396,7 +396,8 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   const long nblocks = (n + kBlock - 1) / kBlock;
   const std::size_t nw = walls_.size();
   if (im.tallies.size() < static_cast<std::size_t>(nblocks)) im.tallies.resize(static_cast<std::size_t>(nblocks));
-  // Row ranges of the pair pass: one per thread (results do not depend on their number).
+  // Row ranges of the pair pass and of the parked pass, one per thread
+  // (partner_routing.hpp). Results depend on neither their number nor where they start.
   const long parts = n >= kMinParallelParticles ? std::max(1, threads_) : 1;
   if (im.routing.parts != parts) {
     im.routing = route_partner_shares(im.list, kBlock, parts);
@@ -430,15 +431,16 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   double max_d2 = 0.0;
 #pragma omp parallel for schedule(static, 1) num_threads(threads_) if (parts > 1) reduction(max : max_d2)
   for (long part = 0; part < parts; ++part)
-  for (long b = first_block_of_part(nblocks, parts, part); b < first_block_of_part(nblocks, parts, part + 1); ++b) {
+  for (long b = im.routing.range_start[part]; b < im.routing.range_start[part + 1]; ++b) {
     BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
     tally.reset(nw);
     max_d2 = std::max(max_d2, pass.sweep_rows(b * kBlock, std::min(n, (b + 1) * kBlock), tally));
   }
-  // Pass 2: the parked particles (step 4).
+  // Pass 2: the parked particles (step 4), in ranges of equal numbers of them.
   if (im.routing.parked() > 0) {
-#pragma omp parallel for schedule(static) num_threads(threads_) if (parts > 1) reduction(max : max_d2)
-    for (long b = 0; b < nblocks; ++b) {
+#pragma omp parallel for schedule(static, 1) num_threads(threads_) if (parts > 1) reduction(max : max_d2)
+    for (long part = 0; part < parts; ++part)
+    for (long b = im.routing.parked_range_start[part]; b < im.routing.parked_range_start[part + 1]; ++b) {
       BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
       const long j_end = std::min(n, (b + 1) * kBlock);
       for (long j = b * kBlock; j < j_end; ++j)

@@ -62,8 +62,22 @@ TEST(PartnerRouting, PartnersNamedFromAnotherRangeAreParkedInRowOrder) {
   EXPECT_EQ(slot_of(list, two, 998, 999), two.park_start[999] + 1);
   EXPECT_EQ(slot_of(list, two, 500, 501), PartnerRouting::kDirect);
   EXPECT_EQ(slot_of(list, two, 0, 1), PartnerRouting::kDirect);
+  // The parked pass splits the parked particles evenly: 500 (block 5) and 999 (block 9).
+  EXPECT_EQ(two.parked_range_start, (std::vector<long>{0, 9, 10}));
   // 3 ranges start at blocks 0, 3 and 6 (10 x p / 3).
   const PartnerRouting three = route_partner_shares(list, 100, 3);
+  EXPECT_EQ(three.range_start, (std::vector<long>{0, 3, 6, 10}));
   EXPECT_EQ(parked_particles(three), (std::vector<int>{300, 600, 999}));
   EXPECT_EQ(three.parked(), 4u);
+  // The parked pass: one parked particle in each of blocks 3, 6 and 9.
+  EXPECT_EQ(three.parked_range_start, (std::vector<long>{0, 6, 9, 10}));
+}
+
+TEST(PartnerRouting, RangesSplitTheWeightAtTheNearestBlockBoundary) {
+  // Weights 1 1 1 1 10 1 1 1 1 1 (total 19): before block 5 lie 14, before block 4 lie 4;
+  // 14 is nearer to half (9.5).
+  EXPECT_EQ(split_by_weight({1, 1, 1, 1, 10, 1, 1, 1, 1, 1}, 2), (std::vector<long>{0, 5, 10}));
+  EXPECT_EQ(split_by_weight({3, 3, 3, 3}, 4), (std::vector<long>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(split_by_weight({0, 0, 0, 0}, 2), (std::vector<long>{0, 4, 4}));  // nothing to share
+  EXPECT_EQ(split_by_weight({5, 5}, 3), (std::vector<long>{0, 1, 1, 2}));   // more ranges than blocks
 }
