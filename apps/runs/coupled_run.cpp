@@ -1,7 +1,5 @@
 #include "runs/coupled_run.hpp"
 
-#include <yaml-cpp/yaml.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,12 +29,6 @@ void effective_dem(const config::CaseFile& cf, const RunOptions& o, CoupledRun& 
   r.has_receiver = cf.receiver.has_value();
   if (cf.receiver) r.receiver = config::effective_receiver(*cf.receiver, ov);
   r.dem = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, ov);
-}
-
-std::string resolved_dem_section(const config::CaseFile& cf) {
-  YAML::Emitter e;
-  e << YAML::Load(cf.resolved_yaml)["dem"];
-  return e.c_str();
 }
 
 // A condition the coupled run refuses unless its flag allows it; allowed, it becomes a
@@ -98,7 +90,7 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
       r.dem_dir = o.dem_from;
       r.dem_summary = earlier_dem_run_summary(cf.resolved_yaml, o.dem_from);
     } else {
-      r.cache_key = dem_cache_key(resolved_dem_section(cf), r.dem, centrec::io::code_version());
+      r.cache_key = dem_cache_key(cf.resolved_yaml, r.dem, centrec::io::code_version());
       const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key, [&](const std::string& dir, bool resume) {
         if (resume) std::fprintf(stderr, "centrec run: continuing the interrupted DEM run in %s\n", dir.c_str());
         const auto from = resume ? std::optional<io::RunCheckpoint>(io::read_checkpoint(dir)) : std::nullopt;

@@ -13,22 +13,26 @@
 
 #include "io/atomic_write.hpp"
 #include "io/provenance.hpp"
+#include "runs/dem_inputs.hpp"
 
 namespace centrec::runs {
 
 namespace fs = std::filesystem;
 
-std::string dem_cache_key(const std::string& resolved_dem_yaml, const config::DemCase& e, const std::string& version) {
-  // The resolved section holds every key with its default; the values a receiver derives
-  // (drum and flow) are not in it, nor is a seed given on the command line (a replica), so
-  // they are appended at full precision.
+std::string dem_cache_key(const std::string& resolved_yaml, const config::DemCase& e, const std::string& version) {
+  // The resolved `dem:` section holds every key with its default (less those that change no
+  // result: dem_inputs.hpp); the values a receiver derives (drum and flow) are not in it,
+  // nor is a seed given on the command line (a replica), so they are appended at full
+  // precision.
+  std::string inputs;
+  for (const auto& [key, value] : dem_input_values(resolved_yaml, {"dem"})) inputs += key + ": " + value + "\n";
   char derived[320];
   std::snprintf(derived, sizeof derived, "\nderived: %.17g %.17g %.17g %.17g %.17g\nseed: %llu\n", e.scene.drum.diameter,
                 e.scene.drum.length, e.scene.drum.omega, e.scene.drum.tilt, dem::scene::target_mass_flow(e.scene),
                 static_cast<unsigned long long>(e.scene.seed));
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx",
-                static_cast<unsigned long long>(io::fnv1a64(resolved_dem_yaml + derived + "version: " + version)));
+                static_cast<unsigned long long>(io::fnv1a64(inputs + derived + "version: " + version)));
   return hex;
 }
 

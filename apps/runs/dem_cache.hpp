@@ -1,7 +1,8 @@
 #pragma once
 // The DEM cache of `centrec run`: a DEM run's outputs are stored under
-// CACHE/<key>/, the key a hash of every DEM input (the resolved `dem:` configuration, the
-// drum and feed the receiver derived, and the code version), so a run whose DEM inputs are
+// CACHE/<key>/, the key a hash of every DEM input (the resolved `dem:` configuration less
+// the thread count and intervals, the drum and feed the receiver derived, and the code
+// version), so a run whose DEM inputs are
 // unchanged (a thermal-only change) reuses them and reruns in seconds.
 #include <functional>
 #include <string>
@@ -10,8 +11,10 @@
 
 namespace centrec::runs {
 
-// 16 hex digits of FNV-1a 64 over the DEM inputs.
-std::string dem_cache_key(const std::string& resolved_dem_yaml, const config::DemCase& effective, const std::string& version);
+// 16 hex digits of FNV-1a 64 over the DEM inputs of the case whose resolved configuration
+// is `resolved_yaml` (its `dem:` section less the keys that change no result, e.g. the
+// thread count) and the effective (derived) drum, flow and seed.
+std::string dem_cache_key(const std::string& resolved_yaml, const config::DemCase& effective, const std::string& version);
 
 struct CachedDem {
   std::string dir;  // CACHE/<key>, holding dem.h5 and summary.json

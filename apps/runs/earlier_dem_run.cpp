@@ -1,41 +1,14 @@
 #include "runs/earlier_dem_run.hpp"
 
-#include <yaml-cpp/yaml.h>
-
 #include <filesystem>
 #include <map>
 #include <set>
 #include <stdexcept>
 
 #include "io/summary_json.hpp"
+#include "runs/dem_inputs.hpp"
 
 namespace centrec::runs {
-
-namespace {
-// Keys that choose how a DEM runs, not what it computes.
-bool changes_no_result(const std::string& key) {
-  return key == "dem.run.threads" || key == "dem.run.progress_interval" || key == "dem.run.checkpoint_interval";
-}
-
-// Every scalar under the DEM-input sections as "section.key.subkey" -> value text.
-void collect(const YAML::Node& node, const std::string& path, std::map<std::string, std::string>& out) {
-  if (node.IsMap()) {
-    for (const auto& kv : node) collect(kv.second, path + "." + kv.first.as<std::string>(), out);
-  } else if (node.IsSequence()) {
-    for (std::size_t k = 0; k < node.size(); ++k) collect(node[k], path + "[" + std::to_string(k) + "]", out);
-  } else if (!changes_no_result(path)) {
-    out[path] = node.IsNull() ? "(none)" : node.as<std::string>();
-  }
-}
-
-std::map<std::string, std::string> dem_inputs(const std::string& resolved_yaml) {
-  const YAML::Node root = YAML::Load(resolved_yaml);
-  std::map<std::string, std::string> keys;
-  for (const char* section : {"dem", "receiver"})
-    if (root[section]) collect(root[section], section, keys);
-  return keys;
-}
-}  // namespace
 
 nlohmann::json earlier_dem_run_summary(const std::string& case_resolved_yaml, const std::string& dir) {
   for (const char* file : {"dem.h5", "summary.json"})
@@ -45,7 +18,8 @@ nlohmann::json earlier_dem_run_summary(const std::string& case_resolved_yaml, co
   nlohmann::json summary = io::read_json_file(dir + "/summary.json");
   if (!summary.contains("resolved_config") || !summary["resolved_config"].is_string())
     throw std::invalid_argument(dir + "/summary.json has no resolved_config: not a `centrec dem` run's summary");
-  const auto mine = dem_inputs(case_resolved_yaml), theirs = dem_inputs(summary["resolved_config"].get<std::string>());
+  const auto mine = dem_input_values(case_resolved_yaml, {"dem", "receiver"}),
+             theirs = dem_input_values(summary["resolved_config"].get<std::string>(), {"dem", "receiver"});
   std::string differ;
   auto value = [](const std::map<std::string, std::string>& m, const std::string& k) {
     const auto it = m.find(k);

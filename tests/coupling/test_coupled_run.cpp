@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <tuple>
+#include <utility>
 
 #include "config/case_file.hpp"
 #include "io/code_version.hpp"
@@ -131,13 +132,26 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
   EXPECT_TRUE(h.dem_cached);
   EXPECT_GT(h.result.balance.T_out, T1 + 10.0);
 
+  // Another thread count, in the case or by --threads: the same DEM key (the engine is
+  // bitwise the same at any thread count), so the cached DEM serves both.
+  const CaseFile more_threads = edited_case(dir, "threads: 1", "threads: 2");
+  RunOptions three_threads = o;
+  three_threads.threads = 3;
+  for (const auto& [c, opt] : {std::pair<const CaseFile*, const RunOptions*>{&more_threads, &o}, {&cf, &three_threads}}) {
+    const CoupledRun t = run_coupled_case(*c, *opt);
+    std::printf("threads %s: cached %d, key %s (first %s)\n", c == &cf ? "--threads 3" : "2 in the case", t.dem_cached,
+                t.cache_key.c_str(), first.cache_key.c_str());
+    EXPECT_TRUE(t.dem_cached);
+    EXPECT_EQ(t.cache_key, first.cache_key);
+    EXPECT_EQ(t.result.balance.T_out, T1);
+  }
+
   // An earlier DEM run given by --dem-from (here the cache entry, which holds what
   // `centrec dem` writes): the same answer without DEM work or cache; another thread count is
   // the same DEM; a changed DEM input is refused, naming the key and both values.
   RunOptions given = o;
   given.dem_from = entry;
   given.cache_dir = dir + "/no-cache";
-  const CaseFile more_threads = edited_case(dir, "threads: 1", "threads: 2");
   const CoupledRun g = run_coupled_case(more_threads, given);
   std::printf("from the earlier run %s: T_out %.6f K (coupled %.6f K)\n", g.dem_dir.c_str(), g.result.balance.T_out,
               T1);
