@@ -1,9 +1,8 @@
 #pragma once
-// The DEM cache of `centrec run`: a DEM run's outputs are stored under
-// CACHE/<key>/, the key a hash of every DEM input (the resolved `dem:` configuration less
-// the thread count and intervals, the drum and feed the receiver derived, and the code
-// version), so a run whose DEM inputs are
-// unchanged (a thermal-only change) reuses them and reruns in seconds.
+// The DEM cache of `centrec run`: a DEM run's outputs are stored under CACHE/<key>/, the
+// key a hash of every DEM input (the resolved `dem:` configuration less the thread count
+// and intervals, the drum and feed the receiver derived, and the code version), so a run
+// whose DEM inputs are unchanged (a thermal-only change) reuses them and reruns in seconds.
 #include <functional>
 #include <string>
 
