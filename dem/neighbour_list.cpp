@@ -133,7 +133,7 @@ const ContactHistory* find_carried(const NeighbourList& carried, std::int32_t i,
 
 void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
-                          const PeriodicZ& pz, const NeighbourList& carried, int threads) {
+                          const PeriodicZ& pz, const NeighbourList& carried, ThreadTeam& team) {
   const long n = static_cast<long>(x.size());
   std::vector<std::uint32_t> count(static_cast<std::size_t>(n) + 1, 0);
   auto scan = [&](long i, auto&& emit) {
@@ -150,24 +150,27 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
       if (norm2(d) < cut * cut) emit(j);
     });
   };
-#pragma omp parallel for schedule(static) num_threads(threads) if (n >= kMinParallelParticles)
-  for (long i = 0; i < n; ++i) {
-    std::uint32_t k = 0;
-    scan(i, [&](std::int32_t) { ++k; });
-    count[i + 1] = k;
-  }
+  const int parts = n >= kMinParallelParticles ? team.size() : 1;
+  team.run(parts, [&](int p) {
+    for (long i = range_begin(n, parts, p); i < range_begin(n, parts, p + 1); ++i) {
+      std::uint32_t k = 0;
+      scan(i, [&](std::int32_t) { ++k; });
+      count[i + 1] = k;
+    }
+  });
   for (long i = 0; i < n; ++i) count[i + 1] += count[i];
   out.start = std::move(count);
   out.nbr.resize(out.start[n]);
   out.hist.assign(out.start[n], ContactHistory{});
-#pragma omp parallel for schedule(static) num_threads(threads) if (n >= kMinParallelParticles)
-  for (long i = 0; i < n; ++i) {
-    std::uint32_t k = out.start[i];
-    scan(i, [&](std::int32_t j) {
-      if (const ContactHistory* h = find_carried(carried, static_cast<std::int32_t>(i), j)) out.hist[k] = *h;
-      out.nbr[k++] = j;
-    });
-  }
+  team.run(parts, [&](int p) {
+    for (long i = range_begin(n, parts, p); i < range_begin(n, parts, p + 1); ++i) {
+      std::uint32_t k = out.start[i];
+      scan(i, [&](std::int32_t j) {
+        if (const ContactHistory* h = find_carried(carried, static_cast<std::int32_t>(i), j)) out.hist[k] = *h;
+        out.nbr[k++] = j;
+      });
+    }
+  });
   out.reach = 0;
   for (long i = 0; i < n; ++i)
     for (std::uint32_t e = out.start[i]; e < out.start[i + 1]; ++e)

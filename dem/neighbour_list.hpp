@@ -10,6 +10,7 @@
 #include "dem/contact_history.hpp"
 #include "dem/motion.hpp"
 #include "dem/periodic_z.hpp"
+#include "dem/thread_team.hpp"
 #include "dem/vec3.hpp"
 
 namespace centrec::dem {
@@ -60,6 +61,6 @@ std::vector<std::int32_t> sort_into_cells(CellGrid& grid, const std::vector<Vec3
 // rows there), others start at zero.
 void build_neighbour_list(NeighbourList& out, const CellGrid& grid, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
-                          const PeriodicZ& pz, const NeighbourList& carried, int threads);
+                          const PeriodicZ& pz, const NeighbourList& carried, ThreadTeam& team);
 
 }  // namespace centrec::dem

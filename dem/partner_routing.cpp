@@ -28,14 +28,16 @@ PartnerRouting route_partner_shares(const NeighbourList& list, long block, long 
   const long blocks = (n + block - 1) / block;
   PartnerRouting out;
   out.parts = parts;
-  // Per particle: the lowest row naming it (its own row if none does) and how many entries name it.
-  std::vector<long> first_reader(static_cast<std::size_t>(n));
+  // Per particle: the lowest and the highest row naming it (its own row if none does) and
+  // how many entries name it.
+  std::vector<long> first_reader(static_cast<std::size_t>(n)), last_reader(static_cast<std::size_t>(n));
   std::vector<std::uint32_t> named(static_cast<std::size_t>(n), 0);
-  for (long j = 0; j < n; ++j) first_reader[static_cast<std::size_t>(j)] = j;
+  for (long j = 0; j < n; ++j) first_reader[static_cast<std::size_t>(j)] = last_reader[static_cast<std::size_t>(j)] = j;
   for (long i = 0; i < n; ++i)
     for (std::uint32_t e = list.start[i]; e < list.start[i + 1]; ++e) {
       const std::size_t j = static_cast<std::size_t>(list.nbr[e]);
       first_reader[j] = std::min(first_reader[j], i);
+      last_reader[j] = std::max(last_reader[j], i);
       ++named[j];
     }
   // The pair pass's ranges: equal numbers of blocks. (Ranges of equal estimated cost, a
@@ -47,7 +49,10 @@ PartnerRouting route_partner_shares(const NeighbourList& list, long block, long 
   std::vector<long> parked_in_block(static_cast<std::size_t>(blocks), 0);
   for (long p = 0; p < parts; ++p)
     for (long j = out.range_start[p] * block; j < std::min(n, out.range_start[p + 1] * block); ++j) {
-      const bool parked = first_reader[static_cast<std::size_t>(j)] < out.range_start[p] * block;
+      // Parked: named by a row of an earlier range, or by a row after its own (a particle
+      // taken into the list without a rebuild, dem/simulation_list_edits.cpp).
+      const bool parked = first_reader[static_cast<std::size_t>(j)] < out.range_start[p] * block ||
+                          last_reader[static_cast<std::size_t>(j)] > j;
       out.park_start[j + 1] = out.park_start[j] + (parked ? named[static_cast<std::size_t>(j)] : 0u);
       parked_in_block[j / block] += parked ? 1 : 0;
     }

@@ -1,6 +1,6 @@
 #pragma once
 // The force pass's row ranges, one per thread, and where it puts the partner's share of
-// each pair (force and torque on j, the higher index of the half-list pair (i, j)).
+// each pair (force and torque on j, the partner of row i's half-list entry (i, j)).
 //
 // Rows are worked on in `parts` contiguous ranges of blocks, one thread each. A partner
 // whose every naming row lies in its own range is "direct": its rows add their shares
@@ -9,7 +9,9 @@
 // named round a periodic boundary) is "parked": its shares are written to slots grouped by
 // partner in the same increasing row order, and summed once all ranges are done. Both give
 // the sum of the shares in increasing row order, then plus the partner's own row: the same
-// bits for any number of parts and wherever the ranges start.
+// bits for any number of parts and wherever the ranges start. A row may also name a
+// partner of lower index (a particle taken in without a rebuild names older ones): that
+// partner is parked too, so it is totalled only after the row that names it last.
 //
 // Speed: the pair pass's ranges hold equal numbers of blocks; the parked particles all lie
 // in the ranges after the first, so the parked pass has ranges of its own, with equal

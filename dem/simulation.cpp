@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -65,7 +66,10 @@ Simulation::Simulation(const SimulationConfig& config) : cfg_(config), impl_(std
 
 Simulation::~Simulation() = default;
 
-void Simulation::set_threads(int n) { threads_ = n > 0 ? n : omp_get_max_threads(); }
+void Simulation::set_threads(int n) {
+  threads_ = n > 0 ? n : omp_get_max_threads();
+  if (!impl_->team || impl_->team->size() != threads_) impl_->team = std::make_unique<ThreadTeam>(threads_);
+}
 
 MaterialId Simulation::add_material(const Material& m) {
   if (!(m.youngs_modulus > 0.0) || !(m.density > 0.0) || !(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
@@ -161,7 +165,9 @@ std::int64_t Simulation::add_particle(const ParticleInit& p) {
   if (!(p.radius > 0.0)) throw std::invalid_argument("particle radius must be > 0");
   if (!is_finite(p.x) || !is_finite(p.v) || !is_finite(p.w)) throw std::invalid_argument("particle: non-finite state");
   require_interactions(p.material.index, "particle");
-  invalidate_list();
+  // A valid list takes the particle in at the next step without a rebuild
+  // (take_in_new_particles); otherwise the next step rebuilds.
+  if (!(ready_ && !dirty_)) invalidate_list();
   const std::int64_t id = next_id_++;
   if (insert_log_.empty() || insert_log_.back().first != step_) insert_log_.push_back({step_, id});
   // One zero row in every array, then the particle's values (zero torque, wall histories).
@@ -179,7 +185,6 @@ std::int64_t Simulation::add_particle(const ParticleInit& p) {
   motion_[i] = p.motion;
   set_mass_properties(i);
   f_[i] = m_[i] * cfg_.gravity;  // gravity for the first half-kick
-  dirty_ = true;
   return id;
 }
 
@@ -217,6 +222,10 @@ std::size_t Simulation::remove_particles(const std::vector<std::int64_t>& ids) {
   }
   const std::size_t removed = x_.size() - order.size();
   if (removed == 0) return 0;
+  if (ready_ && !dirty_) {
+    remove_from_lists(order, new_of_old);
+    return removed;
+  }
   invalidate_list();
   impl_->carried = carry_contacts(impl_->carried, order, new_of_old);
   permute_particles(order);
@@ -321,6 +330,7 @@ void Simulation::rebuild_lists() {
 }
 
 void Simulation::rebuild() {
+  const auto t0 = std::chrono::steady_clock::now();
   Impl& im = *impl_;
   double rmax = 0.0;
   for (double r : r_) rmax = std::max(rmax, r);
@@ -332,7 +342,7 @@ void Simulation::rebuild() {
   for (std::size_t k = 0; k < order.size(); ++k) new_of_old[static_cast<std::size_t>(order[k])] = static_cast<std::int32_t>(k);
   const NeighbourList carried = carry_contacts(dirty_ ? im.carried : im.list, order, new_of_old);
   permute_particles(order);
-  build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.pz, carried, threads_);
+  build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.pz, carried, *im.team);
   im.touch.resize(im.list.nbr.size());
   for (std::size_t e = 0; e < im.touch.size(); ++e) im.touch[e] = !is_zero(im.list.hist[e]);
   im.routing = PartnerRouting{};  // planned by the next force pass, for its thread count
@@ -346,15 +356,18 @@ void Simulation::rebuild() {
   im.angle_since_build = 0.0;
   im.drum_frame = scene_symmetric_about_drum();
   im.wall_mask.assign(n, 0u);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (motion_[i] != Motion::free) continue;
-    std::uint32_t mask = 0;
-    for (std::size_t w = 0; w < walls_.size(); ++w)
-      if (wall_candidate(walls_[w], x_[i], r_[i], im.skin)) mask |= 1u << w;
-    im.wall_mask[i] = mask;
-  }
+  for (std::size_t i = 0; i < n; ++i) im.wall_mask[i] = candidate_walls(i);
   ++im.rebuilds;
   dirty_ = false;
+  times_.neighbour_build += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::uint32_t Simulation::candidate_walls(std::size_t i) const {
+  if (motion_[i] != Motion::free) return 0u;
+  std::uint32_t mask = 0;
+  for (std::size_t w = 0; w < walls_.size(); ++w)
+    if (wall_candidate(walls_[w], x_[i], r_[i], impl_->skin)) mask |= 1u << w;
+  return mask;
 }
 
 bool Simulation::scene_symmetric_about_drum() const {
@@ -412,11 +425,15 @@ double Simulation::integrate_first_half() {
   const long n = static_cast<long>(x_.size());
   const FirstHalfStep h = begin_first_half();
   const Vec3* xb = impl_->x_build.data();
-  double max_d2 = 0.0;
-#pragma omp parallel for schedule(static) num_threads(threads_) if (n >= kMinParallelParticles) reduction(max : max_d2)
-  for (long i = 0; i < n; ++i)
-    max_d2 = std::max(max_d2, h.advance(motion_[i], inv_m_[i], inv_inertia_[i], f_[i], t_[i], xb[i], x_[i], v_[i], w_[i]));
-  return max_d2;
+  const int parts = n >= kMinParallelParticles ? threads_ : 1;
+  std::vector<double> part_d2(static_cast<std::size_t>(parts), 0.0);
+  impl_->team->run(parts, [&](int p) {
+    double d2 = 0.0;
+    for (long i = range_begin(n, parts, p); i < range_begin(n, parts, p + 1); ++i)
+      d2 = std::max(d2, h.advance(motion_[i], inv_m_[i], inv_inertia_[i], f_[i], t_[i], xb[i], x_[i], v_[i], w_[i]));
+    part_d2[static_cast<std::size_t>(p)] = d2;
+  });
+  return *std::max_element(part_d2.begin(), part_d2.end());
 }
 
 void Simulation::step(std::int64_t nsteps) {
@@ -425,17 +442,26 @@ void Simulation::step(std::int64_t nsteps) {
   // (same operations in the same order as separate sweeps: results are unchanged); the
   // last step of the call ends with the second half kick, so between calls the state is
   // the usual end-of-step state. dirty_ changes only between calls.
+  using clock = std::chrono::steady_clock;
+  const auto seconds_since = [](clock::time_point t0) { return std::chrono::duration<double>(clock::now() - t0).count(); };
   double max_d2 = 0.0;
   bool started = false;  // this step's first half already done by the previous force pass
   for (std::int64_t s = 0; s < nsteps; ++s) {
     if (dirty_) rebuild();
-    if (!started) max_d2 = integrate_first_half();
+    if (impl_->list.rows() < x_.size()) take_in_new_particles();
+    if (!started) {
+      const auto t0 = clock::now();
+      max_d2 = integrate_first_half();
+      times_.first_half += seconds_since(t0);
+    }
     for (Wall& w : walls_) w.origin += dt_ * w.velocity;
     ++step_;
     time_ += dt_;
     if (max_d2 > 0.25 * impl_->skin * impl_->skin) rebuild();  // moved more than skin/2
     started = s + 1 < nsteps;
+    const auto t0 = clock::now();
     max_d2 = compute_forces(true, started ? AfterForces::second_and_next_first_half : AfterForces::second_half);
+    times_.force_pass += seconds_since(t0);
   }
 }
 
@@ -445,6 +471,7 @@ NeighbourStats Simulation::neighbour_stats() const {
   s.wall_contacts = impl_->wall_contacts;
   s.list_entries = impl_->list.nbr.size();
   s.rebuilds = impl_->rebuilds;
+  s.list_edits = impl_->list_edits;
   s.skin = impl_->skin;
   s.particles = x_.size();
   return s;

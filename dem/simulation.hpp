@@ -80,12 +80,24 @@ struct NeighbourStats {
   std::size_t wall_contacts = 0;     // particle-wall contacts after the last force pass
   std::size_t list_entries = 0;      // neighbour-list entries (each pair once)
   std::size_t rebuilds = 0;          // neighbour-list rebuilds (each also re-sorts)
+  std::size_t list_edits = 0;        // insertions / removals worked into the lists without a rebuild
   double skin = 0.0;                 // m
   std::size_t particles = 0;
   // Contacts per particle as LIGGGHTS counts them: (2 pair contacts + wall contacts) / N.
   double contacts_per_particle() const {
     return particles ? (2.0 * pair_contacts + wall_contacts) / static_cast<double>(particles) : 0.0;
   }
+};
+
+// Wall-clock seconds the engine has spent in each of its phases (speed records:
+// summary.json, docs/benchmarks.md). The force pass fuses the pair contacts, the wall
+// contacts and the integration into one sweep per step, so they are one figure here (the
+// split within it comes from a profiler, docs/benchmarks.md).
+struct EngineTimes {
+  double force_pass = 0.0;       // s: contacts and integration (the sweep and the parked pass)
+  double first_half = 0.0;       // s: the first half step of each step() call, a sweep of its own
+  double neighbour_build = 0.0;  // s: full rebuilds (spatial sort, neighbour list, share routing)
+  double list_edit = 0.0;        // s: particles added to or removed from the lists without a rebuild
 };
 
 // Thrown when a run blows up; what() names particle id, step, overlap and likely cause.
@@ -158,6 +170,7 @@ class Simulation {
   std::ptrdiff_t index_of(std::int64_t id) const;  // -1 if absent (linear search)
 
   NeighbourStats neighbour_stats() const;
+  const EngineTimes& times() const { return times_; }
   std::size_t memory_bytes() const;  // heap bytes held by particle, list and history arrays
 
   // Contact history with a wall (tests: history survives rebuilds/sorting).
@@ -199,6 +212,11 @@ class Simulation {
   FirstHalfStep begin_first_half();  // the constants of this step's first half
   bool scene_symmetric_about_drum() const;
   void invalidate_list();  // particles or walls changed: carry contacts, rebuild before the next step
+  // Speed (dem/simulation_list_edits.cpp): particles added or removed while the list is
+  // valid join or leave it without a rebuild.
+  void take_in_new_particles();
+  void remove_from_lists(const std::vector<std::int32_t>& order, const std::vector<std::int32_t>& new_of_old);
+  std::uint32_t candidate_walls(std::size_t i) const;  // walls particle i may touch before the next rebuild
   void permute_particles(const std::vector<std::int32_t>& order);
   void update_pair_constants();
   // Refuses material m if a pair it would meet (materials of particles present, walls) has
@@ -215,6 +233,7 @@ class Simulation {
   bool ready_ = false;      // set-up done and lists valid
   bool dirty_ = true;       // particles added/removed since the last rebuild
   double blowup_fraction_ = 0.05;
+  EngineTimes times_;
   std::vector<std::pair<std::int64_t, std::int64_t>> insert_log_;  // (step, first id inserted)
 
   std::vector<Material> materials_;

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "dem/contact_law.hpp"
 #include "dem/first_half_step.hpp"
@@ -428,25 +429,35 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
 
   // Pass 1: each range of rows on its thread; each pair once, in the row of its lower
   // index (steps 1-3 above).
-  double max_d2 = 0.0;
-#pragma omp parallel for schedule(static, 1) num_threads(threads_) if (parts > 1) reduction(max : max_d2)
-  for (long part = 0; part < parts; ++part)
-  for (long b = im.routing.range_start[part]; b < im.routing.range_start[part + 1]; ++b) {
-    BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
-    tally.reset(nw);
-    max_d2 = std::max(max_d2, pass.sweep_rows(b * kBlock, std::min(n, (b + 1) * kBlock), tally));
-  }
+  // (Each part's largest displacement in its own slot, padded to a cache line.)
+  struct alignas(64) PartMax {
+    double d2 = 0.0;
+  };
+  std::vector<PartMax> part_max(static_cast<std::size_t>(parts));
+  im.team->run(static_cast<int>(parts), [&](int part) {
+    double d2 = 0.0;
+    for (long b = im.routing.range_start[part]; b < im.routing.range_start[part + 1]; ++b) {
+      BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+      tally.reset(nw);
+      d2 = std::max(d2, pass.sweep_rows(b * kBlock, std::min(n, (b + 1) * kBlock), tally));
+    }
+    part_max[static_cast<std::size_t>(part)].d2 = d2;
+  });
   // Pass 2: the parked particles (step 4), in ranges of equal numbers of them.
   if (im.routing.parked() > 0) {
-#pragma omp parallel for schedule(static, 1) num_threads(threads_) if (parts > 1) reduction(max : max_d2)
-    for (long part = 0; part < parts; ++part)
-    for (long b = im.routing.parked_range_start[part]; b < im.routing.parked_range_start[part + 1]; ++b) {
-      BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
-      const long j_end = std::min(n, (b + 1) * kBlock);
-      for (long j = b * kBlock; j < j_end; ++j)
-        if (pass.park_start[j] != pass.park_start[j + 1]) max_d2 = std::max(max_d2, pass.parked_total(j, tally));
-    }
+    im.team->run(static_cast<int>(parts), [&](int part) {
+      double d2 = 0.0;
+      for (long b = im.routing.parked_range_start[part]; b < im.routing.parked_range_start[part + 1]; ++b) {
+        BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
+        const long j_end = std::min(n, (b + 1) * kBlock);
+        for (long j = b * kBlock; j < j_end; ++j)
+          if (pass.park_start[j] != pass.park_start[j + 1]) d2 = std::max(d2, pass.parked_total(j, tally));
+      }
+      part_max[static_cast<std::size_t>(part)].d2 = std::max(part_max[static_cast<std::size_t>(part)].d2, d2);
+    });
   }
+  double max_d2 = 0.0;
+  for (const PartMax& m : part_max) max_d2 = std::max(max_d2, m.d2);
   // Step 5: fixed-order reduction over blocks.
   for (auto& f : wall_force_) f = {};
   im.pair_contacts = im.wall_contacts = 0;

@@ -2,6 +2,7 @@
 // Private state of Simulation shared by its implementation files (simulation.cpp: set-up,
 // particles, lists, integration; simulation_forces.cpp: the force pass). Not public API.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "dem/partner_routing.hpp"
 #include "dem/periodic_z.hpp"
 #include "dem/simulation.hpp"
+#include "dem/thread_team.hpp"
 
 namespace centrec::dem {
 
@@ -48,6 +50,7 @@ struct PartnerShare {
 };
 
 struct Simulation::Impl {
+  std::unique_ptr<ThreadTeam> team;  // threads_ threads (set_threads)
   NeighbourList list;              // valid while !dirty_
   NeighbourList carried;           // while dirty_: the contacts to carry into the next rebuild
   CellGrid grid;
@@ -68,7 +71,7 @@ struct Simulation::Impl {
   PartnerRouting routing;
   std::vector<Vec3> acc_f, acc_t;
   std::vector<PartnerShare> share;
-  std::size_t rebuilds = 0, pair_contacts = 0, wall_contacts = 0;
+  std::size_t rebuilds = 0, list_edits = 0, pair_contacts = 0, wall_contacts = 0;
 };
 
 }  // namespace centrec::dem

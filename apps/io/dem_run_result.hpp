@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dem/scene/centrec_scene.hpp"
@@ -41,7 +42,11 @@ struct DemRunResult {
   std::int64_t feeder_deferred = 0;   // feeder insertions postponed for lack of room (< 0: unknown, null)
   double contacts_per_particle = -1.0;  // < 0: the engine did not report it (null in JSON)
   double particle_steps = 0.0;
+  double moving_particle_steps = 0.0;  // of free particles only (the glued wall layer left out); < 0: unknown
   double wall_time = 0.0;  // s
+  // Wall time per phase of the native engine's run (name, s), in print order; empty for
+  // another engine. Their sum is the run's wall time ("other": what no phase timer holds).
+  std::vector<std::pair<std::string, double>> phase_seconds;
   std::vector<dem::scene::ControllerWindow> controller;  // slice holdup controller windows
   dem::scene::FilmFields fields;
   std::vector<NamedSnapshot> snapshots;

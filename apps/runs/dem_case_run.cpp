@@ -60,7 +60,8 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   ProgressMeter progress(total, dc.run.progress_interval);
   const double chunk = std::max(sim.dt() * scene.steps_per_batch(), std::min(0.01, dc.run.duration));
   const double steps_before = ck ? ck->particle_steps : 0.0, wall_before = ck ? ck->wall_time : 0.0;
-  double particle_steps = 0.0;  // this process's
+  double particle_steps = 0.0, moving_steps = 0.0;  // this process's (all particles, free ones)
+  double sampling_seconds = 0.0, checkpoint_seconds = 0.0;  // the samplers' own work, checkpoint writes
   // Progress lines carry the flow over the last turn: a drum's outlet and inlet, a slice's
   // axial flow (and its controller's target) and free particles.
   const bool slice = dc.scene.slice.enabled;
@@ -77,11 +78,19 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
       std::snprintf(b, sizeof b, "outlet %.2f g/s, inlet %.2f g/s", w.out * 1e3, w.fed * 1e3);
     return std::string(b);
   };
+  // The engine's and the scene's phase timers together (what the samplers' time excludes).
+  auto engine_seconds = [&] {
+    const dem::EngineTimes& e = sim.times();
+    const dem::scene::SceneTimes& t = scene.times();
+    return e.force_pass + e.first_half + e.neighbour_build + e.list_edit + t.insertion + t.outlet + t.bookkeeping;
+  };
   auto advance = [&](auto&& body) {
     const std::int64_t s0 = sim.step_count();
-    const double n0 = static_cast<double>(sim.size());
+    const double n0 = static_cast<double>(sim.size()), f0 = static_cast<double>(scene.free_particles());
     body();
-    particle_steps += 0.5 * (n0 + static_cast<double>(sim.size())) * static_cast<double>(sim.step_count() - s0);
+    const double steps = static_cast<double>(sim.step_count() - s0);
+    particle_steps += 0.5 * (n0 + static_cast<double>(sim.size())) * steps;
+    moving_steps += 0.5 * (f0 + static_cast<double>(scene.free_particles())) * steps;
     progress.update(sim.time(), sim.time() / period, particle_steps, false, flows);
   };
 
@@ -100,6 +109,7 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     const auto now = std::chrono::steady_clock::now();
     const double since = std::chrono::duration<double>(now - checkpoint_at).count();
     if (!force && !(dc.run.checkpoint_interval > 0.0 && since >= dc.run.checkpoint_interval)) return;
+    const auto t0 = std::chrono::steady_clock::now();
     io::RunCheckpoint c;
     c.code_version = centrec::io::code_version();
     c.case_path = cf.path;
@@ -116,6 +126,7 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     }
     io::write_checkpoint(out_dir, c);
     checkpoint_at = std::chrono::steady_clock::now();
+    checkpoint_seconds += std::chrono::duration<double>(checkpoint_at - t0).count();
   };
   // Ctrl-C / SIGTERM: checkpoint at the next safe point (where the periodic ones are written) and stop.
   const InterruptGuard interrupt;
@@ -192,6 +203,8 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   // at; each interval with the dispersion's burst of position samples), keeping every
   // stride-th snapshot; between snapshots, a fixed point as in the spin-up.
   auto sample_turn = [&] {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double engine0 = engine_seconds(), checkpoints0 = checkpoint_seconds;
     for (; in_turn < per_turn;) {
       advance([&] { sampler.advance_interval(scene); });
       dem::scene::SnapshotArrays s = dem::scene::take_snapshot(sim);
@@ -204,6 +217,8 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
     }
     sampler.end_turn();
     in_turn = 0;
+    sampling_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() -
+                        (engine_seconds() - engine0) - (checkpoint_seconds - checkpoints0);
   };
   if (sampled < turns)
     progress.phase("sampling", std::to_string(turns) + " turn(s) of " + std::to_string(per_turn) +
@@ -237,7 +252,20 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   r.feeder_deferred = scene.feeder_stats().deferred;
   r.contacts_per_particle = sim.neighbour_stats().contacts_per_particle();
   r.particle_steps = particle_steps;
+  r.moving_particle_steps = ck ? -1.0 : moving_steps;  // a checkpoint does not carry the count
   r.wall_time = wall;
+  if (!ck) {  // a resumed run's timers start at its resumption
+    const dem::EngineTimes& e = sim.times();
+    const dem::scene::SceneTimes& t = scene.times();
+    r.phase_seconds = {{"force_pass", e.force_pass},           {"first_half", e.first_half},
+                       {"neighbour_build", e.neighbour_build}, {"list_edit", e.list_edit},
+                       {"insertion", t.insertion},             {"outlet", t.outlet},
+                       {"bookkeeping", t.bookkeeping},         {"sampling", sampling_seconds},
+                       {"checkpoints", checkpoint_seconds}};
+    double timed = 0.0;
+    for (const auto& p : r.phase_seconds) timed += p.second;
+    r.phase_seconds.push_back({"other", wall - timed});
+  }
   r.fields = sampler.fields();
   r.snapshots = std::move(snapshots);
   r.snapshot_stride = stride;

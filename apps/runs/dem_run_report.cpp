@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
 
 #include "coupling/scaling_laws.hpp"
 #include "dem/film/steady_state.hpp"
@@ -93,7 +94,15 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
   j["contacts_per_particle"] =
       r.contacts_per_particle >= 0.0 ? nlohmann::json(r.contacts_per_particle) : nlohmann::json(nullptr);
   j["particle_steps_per_s"] = r.wall_time > 0.0 ? r.particle_steps / r.wall_time : 0.0;
+  j["moving_particle_steps_per_s"] = r.wall_time > 0.0 && r.moving_particle_steps >= 0.0
+                                         ? nlohmann::json(r.moving_particle_steps / r.wall_time)
+                                         : nlohmann::json(nullptr);
   j["wall_time_s"] = r.wall_time;
+  if (!r.phase_seconds.empty()) {
+    nlohmann::json phases = nlohmann::json::object();
+    for (const auto& [name, seconds] : r.phase_seconds) phases[name] = seconds;
+    j["phase_wall_time_s"] = phases;
+  }
   j["sampled_turns"] = fields.turns;
   if (fields.snapshots > 0) {
     j["mean_film_thickness_d"] = fields.mean_thickness.mean_d;
@@ -136,6 +145,19 @@ void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf
     std::printf("holdup %.4f kg (%lld free particles), inlet %.3f g/s, outlet %.3f g/s over the last %.2f s\n",
                 r.holdup_kg, static_cast<long long>(r.free_particles), flows.fed * 1e3, flows.out * 1e3, window);
   std::printf("%.3g particle-steps/s, wall time %.1f s\n", rate, r.wall_time);
+  if (r.wall_time > 0.0 && r.moving_particle_steps >= 0.0 && r.glued_particles > 0)
+    std::printf("%.3g particle-steps/s counting the free particles only (%lld glued left out)\n",
+                r.moving_particle_steps / r.wall_time, static_cast<long long>(r.glued_particles));
+  if (!r.phase_seconds.empty() && r.wall_time > 0.0) {
+    std::string line = "phases:";
+    for (const auto& [name, seconds] : r.phase_seconds) {
+      char b[96];
+      std::snprintf(b, sizeof b, " %s %.1f s (%.0f %%),", name.c_str(), seconds, 100.0 * seconds / r.wall_time);
+      line += b;
+    }
+    line.back() = '\n';
+    std::fputs(line.c_str(), stdout);
+  }
   const double asked = dc.scene.feeder.mass_flow;
   if (dc.scene.feeder.enabled && !dc.scene.slice.enabled && r.feeder_deferred > 0 && flows.fed < 0.9 * asked)
     std::fprintf(stderr,

@@ -1,5 +1,6 @@
 #include "dem/scene/centrec_scene.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -203,13 +204,22 @@ void CentrecScene::advance(double duration) {
   std::int64_t remaining = std::llround(duration / dt);
   const double R = drum_radius(), L = cfg_.drum.length;
   const bool periodic = cfg_.slice.enabled;
+  using clock = std::chrono::steady_clock;
+  const auto add_since = [](double& total, clock::time_point t0) {
+    total += std::chrono::duration<double>(clock::now() - t0).count();
+  };
   while (remaining > 0) {
     const std::int64_t n = std::min(remaining, steps_per_batch_);
+    // (The engine's share of an insertion or removal, taking the particles into its lists
+    // at the next step, is in its own times.)
+    auto t0 = clock::now();
     if (feeder_ && !prefed_) feeder_->feed(*sim_, n * dt);
     prefed_ = false;
+    add_since(times_.insertion, t0);
     sim_->step(n);
     remaining -= n;
     double out = 0.0, lost = 0.0;
+    t0 = clock::now();
     if (!periodic) {
       // Outlet: past z = L. Lost: anything that escaped the drum some other way.
       const auto& x = sim_->positions();
@@ -227,8 +237,11 @@ void CentrecScene::advance(double duration) {
       }
       if (!gone.empty()) sim_->remove_particles(gone);
     }
+    add_since(times_.outlet, t0);
+    t0 = clock::now();
     if (controller_) controller_->after_batch(*sim_);
     record(out, lost);
+    add_since(times_.bookkeeping, t0);
   }
 }
 

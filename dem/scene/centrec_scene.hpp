@@ -42,6 +42,13 @@ struct SceneState {
   SliceControllerState controller;
 };
 
+// Wall-clock seconds of the scene's own work between engine steps (speed records).
+struct SceneTimes {
+  double insertion = 0.0;  // s: the feeder placing particles (and the engine taking them in)
+  double outlet = 0.0;     // s: finding and removing the particles past the outlet
+  double bookkeeping = 0.0;  // s: the slice controller and the mass-flow log
+};
+
 class CentrecScene {
  public:
   explicit CentrecScene(const SceneConfig& config);
@@ -70,6 +77,7 @@ class CentrecScene {
   std::int64_t glued_particles() const { return glued_; }
   std::int64_t free_particles() const;
   double holdup_mass() const;  // kg of free particles
+  const SceneTimes& times() const { return times_; }
 
  private:
   void build_engine();  // checks the config, creates the engine, its materials and walls
@@ -87,6 +95,7 @@ class CentrecScene {
   MaterialId particle_material_{-1}, wall_material_{-1};
   bool prefed_ = false;  // the first batch was fed before set-up
   double out_total_ = 0.0, lost_total_ = 0.0;
+  SceneTimes times_;
 };
 
 }  // namespace centrec::dem::scene

@@ -21,7 +21,8 @@ NeighbourList chain_list(int n) {
   const std::vector<std::int32_t> order = sort_into_cells(grid, c.x, 1.1, c.pz);
   for (std::size_t k = 0; k < order.size(); ++k) EXPECT_EQ(order[k], static_cast<std::int32_t>(k));
   NeighbourList list;
-  build_neighbour_list(list, grid, c.x, c.r, c.motion, 0.1, c.pz, NeighbourList{}, 1);
+  ThreadTeam serial(1);
+  build_neighbour_list(list, grid, c.x, c.r, c.motion, 0.1, c.pz, NeighbourList{}, serial);
   return list;
 }
 
