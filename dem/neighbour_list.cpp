@@ -150,12 +150,17 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
       if (norm2(d) < cut * cut) emit(j);
     });
   };
+  // One search per particle: each part lists its rows' partners into a buffer of its own,
+  // then the buffers are laid end to end (a count pass first would search twice).
   const int parts = n >= kMinParallelParticles ? team.size() : 1;
+  std::vector<std::vector<std::int32_t>> part_nbr(static_cast<std::size_t>(parts));
   team.run(parts, [&](int p) {
+    std::vector<std::int32_t>& buf = part_nbr[static_cast<std::size_t>(p)];
+    buf.reserve(static_cast<std::size_t>(8 * (range_begin(n, parts, p + 1) - range_begin(n, parts, p))));
     for (long i = range_begin(n, parts, p); i < range_begin(n, parts, p + 1); ++i) {
-      std::uint32_t k = 0;
-      scan(i, [&](std::int32_t) { ++k; });
-      count[i + 1] = k;
+      const std::size_t before = buf.size();
+      scan(i, [&](std::int32_t j) { buf.push_back(j); });
+      count[i + 1] = static_cast<std::uint32_t>(buf.size() - before);
     }
   });
   for (long i = 0; i < n; ++i) count[i + 1] += count[i];
@@ -163,13 +168,13 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
   out.nbr.resize(out.start[n]);
   out.hist.assign(out.start[n], ContactHistory{});
   team.run(parts, [&](int p) {
-    for (long i = range_begin(n, parts, p); i < range_begin(n, parts, p + 1); ++i) {
-      std::uint32_t k = out.start[i];
-      scan(i, [&](std::int32_t j) {
-        if (const ContactHistory* h = find_carried(carried, static_cast<std::int32_t>(i), j)) out.hist[k] = *h;
-        out.nbr[k++] = j;
-      });
-    }
+    const std::vector<std::int32_t>& buf = part_nbr[static_cast<std::size_t>(p)];
+    const long i0 = range_begin(n, parts, p);
+    std::copy(buf.begin(), buf.end(), out.nbr.begin() + out.start[i0]);
+    if (carried.nbr.empty()) return;
+    for (long i = i0; i < range_begin(n, parts, p + 1); ++i)
+      for (std::uint32_t k = out.start[i]; k < out.start[i + 1]; ++k)
+        if (const ContactHistory* h = find_carried(carried, static_cast<std::int32_t>(i), out.nbr[k])) out.hist[k] = *h;
   });
   out.reach = 0;
   for (long i = 0; i < n; ++i)

@@ -47,6 +47,7 @@ struct DemRunResult {
   // Wall time per phase of the native engine's run (name, s), in print order; empty for
   // another engine. Their sum is the run's wall time ("other": what no phase timer holds).
   std::vector<std::pair<std::string, double>> phase_seconds;
+  std::int64_t neighbour_rebuilds = -1, list_edits = -1;  // this process's (< 0: unknown)
   std::vector<dem::scene::ControllerWindow> controller;  // slice holdup controller windows
   dem::scene::FilmFields fields;
   std::vector<NamedSnapshot> snapshots;

@@ -55,6 +55,10 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
                static_cast<long long>(scene.glued_particles()), static_cast<long long>(scene.free_particles()),
                sim.threads());
 
+  // The phase timers from here (the set-up's own list build and forces are not the run's).
+  const dem::EngineTimes engine_at_start = sim.times();
+  const dem::scene::SceneTimes scene_at_start = scene.times();
+  const std::size_t rebuilds_at_start = sim.neighbour_stats().rebuilds, edits_at_start = sim.neighbour_stats().list_edits;
   const double period = scene.turn_period();
   const double total = dc.run.duration + dc.sampling.turns * period;
   ProgressMeter progress(total, dc.run.progress_interval);
@@ -254,13 +258,21 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   r.particle_steps = particle_steps;
   r.moving_particle_steps = ck ? -1.0 : moving_steps;  // a checkpoint does not carry the count
   r.wall_time = wall;
+  r.neighbour_rebuilds = static_cast<std::int64_t>(sim.neighbour_stats().rebuilds - rebuilds_at_start);
+  r.list_edits = static_cast<std::int64_t>(sim.neighbour_stats().list_edits - edits_at_start);
   if (!ck) {  // a resumed run's timers start at its resumption
     const dem::EngineTimes& e = sim.times();
+    const dem::EngineTimes& e0 = engine_at_start;
     const dem::scene::SceneTimes& t = scene.times();
-    r.phase_seconds = {{"force_pass", e.force_pass},           {"first_half", e.first_half},
-                       {"neighbour_build", e.neighbour_build}, {"list_edit", e.list_edit},
-                       {"insertion", t.insertion},             {"outlet", t.outlet},
-                       {"bookkeeping", t.bookkeeping},         {"sampling", sampling_seconds},
+    const dem::scene::SceneTimes& t0 = scene_at_start;
+    r.phase_seconds = {{"force_pass", e.force_pass - e0.force_pass},
+                       {"first_half", e.first_half - e0.first_half},
+                       {"neighbour_build", e.neighbour_build - e0.neighbour_build},
+                       {"list_edit", e.list_edit - e0.list_edit},
+                       {"insertion", t.insertion - t0.insertion},
+                       {"outlet", t.outlet - t0.outlet},
+                       {"bookkeeping", t.bookkeeping - t0.bookkeeping},
+                       {"sampling", sampling_seconds},
                        {"checkpoints", checkpoint_seconds}};
     double timed = 0.0;
     for (const auto& p : r.phase_seconds) timed += p.second;

@@ -103,6 +103,10 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
     for (const auto& [name, seconds] : r.phase_seconds) phases[name] = seconds;
     j["phase_wall_time_s"] = phases;
   }
+  if (r.neighbour_rebuilds >= 0) {
+    j["neighbour_rebuilds"] = r.neighbour_rebuilds;
+    j["neighbour_list_edits"] = r.list_edits;
+  }
   j["sampled_turns"] = fields.turns;
   if (fields.snapshots > 0) {
     j["mean_film_thickness_d"] = fields.mean_thickness.mean_d;
@@ -157,6 +161,11 @@ void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf
     }
     line.back() = '\n';
     std::fputs(line.c_str(), stdout);
+    if (r.neighbour_rebuilds >= 0)
+      std::printf("neighbour lists: %lld rebuilds (one per %.0f steps), %lld insertions/removals worked in without one\n",
+                  static_cast<long long>(r.neighbour_rebuilds),
+                  r.neighbour_rebuilds > 0 ? static_cast<double>(r.steps) / static_cast<double>(r.neighbour_rebuilds) : 0.0,
+                  static_cast<long long>(r.list_edits));
   }
   const double asked = dc.scene.feeder.mass_flow;
   if (dc.scene.feeder.enabled && !dc.scene.slice.enabled && r.feeder_deferred > 0 && flows.fed < 0.9 * asked)

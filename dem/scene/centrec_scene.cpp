@@ -235,13 +235,19 @@ void CentrecScene::advance(double duration) {
           gone.push_back(sim_->ids()[i]);
         }
       }
-      if (!gone.empty()) sim_->remove_particles(gone);
+      if (!gone.empty()) {
+        const double edited = sim_->times().list_edit;  // the engine's share is in its own times
+        sim_->remove_particles(gone);
+        times_.outlet -= sim_->times().list_edit - edited;
+      }
     }
     add_since(times_.outlet, t0);
     t0 = clock::now();
+    const double edited = sim_->times().list_edit;  // removals by the controller: the engine's times
     if (controller_) controller_->after_batch(*sim_);
     record(out, lost);
     add_since(times_.bookkeeping, t0);
+    times_.bookkeeping -= sim_->times().list_edit - edited;
   }
 }
 
