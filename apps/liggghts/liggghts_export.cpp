@@ -349,7 +349,8 @@ std::vector<std::string> liggghts_inexpressible(const config::DemCase& dc) {
   return why;
 }
 
-LiggghtsDeckPlan export_liggghts(const config::CaseFile& cf, const config::DemCase& dc, const std::string& dir) {
+LiggghtsDeckPlan export_liggghts(const config::CaseFile& cf, const config::DemCase& dc, const std::string& dir,
+                                 const dem::scene::SceneState* start) {
   const auto why = liggghts_inexpressible(dc);
   if (!why.empty()) {
     std::string msg = "cannot express this case in LIGGGHTS 3.8:";
@@ -359,7 +360,7 @@ LiggghtsDeckPlan export_liggghts(const config::CaseFile& cf, const config::DemCa
   io::ensure_directory(dir);
   SceneConfig c = dc.scene;
   c.threads = 1;  // the set-up only: its starting particles and resolved dt
-  const dem::scene::CentrecScene scene(c);
+  const dem::scene::CentrecScene scene = start ? dem::scene::CentrecScene(c, *start) : dem::scene::CentrecScene(c);
   LiggghtsDeckPlan plan;
   plan.dt = scene.simulation().dt();
   const double period = dem::scene::turn_period(c);

@@ -10,6 +10,7 @@
 
 #include "config/case_dem.hpp"
 #include "config/case_file.hpp"
+#include "dem/scene/centrec_scene.hpp"
 
 namespace centrec::liggghts {
 
@@ -38,7 +39,10 @@ struct LiggghtsDeckPlan {
 std::vector<std::string> liggghts_inexpressible(const config::DemCase& dc);
 
 // Writes the deck, data file and STL files into dir (created); throws
-// std::invalid_argument listing the inexpressible settings.
-LiggghtsDeckPlan export_liggghts(const config::CaseFile& cf, const config::DemCase& dc, const std::string& dir);
+// std::invalid_argument listing the inexpressible settings. The data file holds the
+// case's starting particles, or with `start` the particles of that state (a checkpoint of
+// a run of the same case: the benchmark starts both engines from a steady drum).
+LiggghtsDeckPlan export_liggghts(const config::CaseFile& cf, const config::DemCase& dc, const std::string& dir,
+                                 const dem::scene::SceneState* start = nullptr);
 
 }  // namespace centrec::liggghts
