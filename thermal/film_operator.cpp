@@ -30,6 +30,14 @@ FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const 
   if (!(m.alpha >= 0 && m.alpha <= 1 && m.epsilon > 0 && m.epsilon <= 1))
     throw std::invalid_argument("material: alpha must be in [0, 1] and epsilon in (0, 1]");
   if (!(model_.T_in > 0)) throw std::invalid_argument("inlet temperature must be > 0 K");
+  if (model_.flux.aperture_mean > 0.0) {
+    // The flux given through the aperture: the same power spread uniformly over the film,
+    // q_film = q_aperture A_aperture / A_film (docs/cavity_model.md, "Two bands").
+    if (!model_.cavity.enabled)
+      throw std::invalid_argument("a flux given at the aperture (flux.q_aperture) needs the cavity model: the open "
+                                  "surface has no aperture");
+    model_.flux.q = model_.flux.aperture_mean * aperture_area() / film_area();
+  }
   q_column_.resize(grid_.nz);
   for (int i = 0; i < grid_.nz; ++i) q_column_[i] = model_.flux.at(grid_.zc[i]);
   props_.resize(size());
@@ -47,6 +55,16 @@ FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const 
     }
   }
   if (model_.cavity.enabled) setup_cavity();
+}
+
+double FilmOperator::film_area() const { return grid_.perimeter * grid_.length; }
+
+double FilmOperator::aperture_area() const {
+  if (!model_.cavity.enabled) return 0.0;
+  // The aperture at z = L: a disc of aperture_diameter, by default the film's drum diameter.
+  const double R = grid_.perimeter / (2.0 * kPi);
+  const double ra = model_.cavity.aperture_diameter > 0 ? std::min(0.5 * model_.cavity.aperture_diameter, R) : R;
+  return kPi * ra * ra;
 }
 
 void FilmOperator::setup_cavity() {

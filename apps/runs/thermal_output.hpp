@@ -20,8 +20,9 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
 // points (z, eta, 0), quadrilaterals between them, the steady fields as point data.
 std::string thermal_xdmf(const std::string& h5_name, const ThermalRun& r);
 nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r);
-// Two printed lines: the receiver's power flow (aperture power, carried, losses through the
-// aperture, convective and wall losses, receiver efficiency, balance residual).
-void print_receiver_report(const config::ThermalCase& c, const thermal::FilmBalance& b);
+// Three printed lines: the mean solar flux on the film and through the aperture; the
+// receiver's power flow (aperture power, carried, losses through the aperture, convective
+// and wall losses, receiver efficiency, balance residual).
+void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r);
 
 }  // namespace centrec::runs

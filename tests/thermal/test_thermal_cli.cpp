@@ -37,7 +37,7 @@ film:
 thermal:
   grid: {nz: 40, nxi: 12}
   T_in: 873.15
-  flux: {q: 1.0e6}
+  flux: {q_film: 1.0e6}
 )";
 
 std::string config_error(const std::string& dir, const std::string& text) {
@@ -154,13 +154,13 @@ TEST(ThermalCli, CsvFluxTableEqualsUniformFlux) {
   std::ofstream(dir + "/flux.csv") << "z_m,q_W_m2\n# constant table\n0.0, 1.0e6\n0.5, 1.0e6\n1.0, 1.0e6\n";
   const double uniform = run_thermal_case(read_thermal_case(write_case(dir, kCase))).balance.T_out;
   const double table = run_thermal_case(read_thermal_case(write_case(
-                                            dir, replace(kCase, "flux: {q: 1.0e6}",
+                                            dir, replace(kCase, "flux: {q_film: 1.0e6}",
                                                          "flux: {profile: table, table_file: flux.csv}"))))
                            .balance.T_out;
   std::printf("T_out uniform %.9f K, constant CSV table %.9f K (tolerance 1e-9 K)\n", uniform, table);
   EXPECT_NEAR(uniform, table, 1e-9);
   std::ofstream(dir + "/bad.csv") << "0.0, 1.0e6\n0.5; 1.0e6\n";
-  const std::string e = config_error(dir, replace(kCase, "flux: {q: 1.0e6}", "flux: {profile: table, table_file: bad.csv}"));
+  const std::string e = config_error(dir, replace(kCase, "flux: {q_film: 1.0e6}", "flux: {profile: table, table_file: bad.csv}"));
   std::printf("error: %s\n", e.c_str());
   EXPECT_NE(e.find("bad.csv:2"), std::string::npos);
   std::filesystem::remove_all(dir);
