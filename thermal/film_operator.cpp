@@ -51,7 +51,7 @@ FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const 
         for (int j = 0; j < grid_.nxi; ++j) phi += grid_.phi[grid_.index(i, j)] / grid_.nxi;
         n = (1.0 - phi) / (1.5 * phi);
       }
-      extinction_depth_.push_back(n * m.d);
+      extinction_depth_.push_back(model_.surface.extinction_scale * n * m.d);
     }
   }
   if (model_.cavity.enabled) setup_cavity();
@@ -157,8 +157,9 @@ void FilmOperator::update_cavity(const double* T, const Inputs& in) {
       area_T += c.area[k] * Tm;
       area += c.area[k];
     }
-    c.h = cs.convection_correlation ? cavity_convection_coefficient(area_T / area, s.T_air, D, d_ap, cs.tilt_rad)
-                                    : s.h_conv;
+    c.h = cs.convection_correlation
+              ? cs.convection_scale * cavity_convection_coefficient(area_T / area, s.T_air, D, d_ap, cs.tilt_rad)
+              : s.h_conv;
     for (int k = 0; k < n; ++k) {
       double h = c.m[k] * E_env;
       const double* Mk = &c.M[static_cast<std::size_t>(k) * n];

@@ -95,13 +95,13 @@ struct XdmfField {
 const XdmfField kXdmfFields[] = {{"T", "K"},         {"k_n", "W/(m K)"}, {"k_bed", "W/(m K)"}, {"k_rad", "W/(m K)"},
                                  {"k_mix", "W/(m K)"}, {"u", "m/s"},        {"phi", "1"},         {"D", "m2/s"}};
 
-// Film-average of a per-section quantity over the irradiated length (equal sections).
+}  // namespace
+
 double section_mean(const std::vector<thermal::KeffSection>& k, double thermal::KeffSection::*m) {
   double s = 0.0;
   for (const auto& x : k) s += x.*m;
   return k.empty() ? 0.0 : s / k.size();
 }
-}  // namespace
 
 void write_thermal_h5(const std::string& path, const config::ThermalCase& c, const ThermalRun& r) {
   io::H5File f = io::H5File::create(path);
