@@ -193,9 +193,10 @@ void print_budget_table(const BudgetResult& r) {
   for (std::size_t i = 0; i < r.inputs.size(); ++i) {
     const BudgetInput& in = r.inputs[i];
     const BudgetInputResult& p = r.per_input[i];
-    std::printf("| %s | %.4g-%.4g %s | %s | %+.2f / %+.2f | %+.4f / %+.4f | %+.4f / %+.4f | %.1f %% / %.1f %% | "
+    const std::string unit = in.unit.empty() ? "" : " " + in.unit;
+    std::printf("| %s | %.4g-%.4g%s | %s | %+.2f / %+.2f | %+.4f / %+.4f | %+.4f / %+.4f | %.1f %% / %.1f %% | "
                 "%.1f %% / %.1f %% | %.1f %% / %.1f %% |\n",
-                in.name.c_str(), in.lo, in.hi, in.unit.c_str(), in.basis.c_str(), p.at_lo.T_out - r.nominal.T_out,
+                in.name.c_str(), in.lo, in.hi, unit.c_str(), in.basis.c_str(), p.at_lo.T_out - r.nominal.T_out,
                 p.at_hi.T_out - r.nominal.T_out, p.at_lo.efficiency - r.nominal.efficiency,
                 p.at_hi.efficiency - r.nominal.efficiency, p.at_lo.k_eff - r.nominal.k_eff,
                 p.at_hi.k_eff - r.nominal.k_eff, 100.0 * p.share_oat[0], 100.0 * p.share_lhs[0],
