@@ -32,6 +32,9 @@ struct SurfaceConditions {
   // Multiplies the extinction depth, given or from phi (the error budget's perturbation;
   // 1 changes no arithmetic).
   double extinction_scale = 1.0;
+  // With the depth from phi (extinction_depth_d < 0): each cell's own phi instead of the
+  // column mean (thermal/solar_extinction.hpp).
+  bool extinction_local = false;
 };
 
 // The drum interior as a diffuse grey enclosure (thermal/cavity_view_factors.hpp,

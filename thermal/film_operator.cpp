@@ -7,6 +7,7 @@
 
 #include "cavity_convection.hpp"
 #include "physical_constants.hpp"
+#include "solar_extinction.hpp"
 
 namespace centrec::thermal {
 
@@ -42,14 +43,24 @@ FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const 
   for (int i = 0; i < grid_.nz; ++i) q_column_[i] = model_.flux.at(grid_.zc[i]);
   props_.resize(size());
   const double ext = model_.surface.extinction_depth_d;
-  if (ext != 0.0) {
+  if (ext < 0.0 && model_.surface.extinction_local) {
+    // Each cell's own phi: the optical depth accumulates through the loose top
+    // (thermal/solar_extinction.hpp).
+    local_share_.resize(size());
+    std::vector<double> phi(grid_.nxi);
+    for (int i = 0; i < grid_.nz; ++i) {
+      for (int j = 0; j < grid_.nxi; ++j) phi[j] = grid_.phi[grid_.index(i, j)];
+      const std::vector<double> s = local_extinction_shares(phi, grid_.deta[i], m.d, model_.surface.extinction_scale);
+      for (int j = 0; j < grid_.nxi; ++j) local_share_[grid_.index(i, j)] = s[j];
+    }
+  } else if (ext != 0.0) {
     // Exponential solar absorption: depth n d per column (n from the column's mean phi if < 0).
     for (int i = 0; i < grid_.nz; ++i) {
       double n = ext;
       if (n < 0) {
         double phi = 0.0;
         for (int j = 0; j < grid_.nxi; ++j) phi += grid_.phi[grid_.index(i, j)] / grid_.nxi;
-        n = (1.0 - phi) / (1.5 * phi);
+        n = extinction_depth_d_from_phi(phi);
       }
       extinction_depth_.push_back(model_.surface.extinction_scale * n * m.d);
     }
@@ -282,6 +293,7 @@ double FilmOperator::wall_loss(int i, double T_p, double kn) const {
 }
 
 double FilmOperator::absorbed_share(int i, int j) const {
+  if (!local_share_.empty()) return local_share_[grid_.index(i, j)];
   if (!extinction_depth_.empty()) {
     // Beer-Lambert below the surface, normalised over the film depth.
     const double t = grid_.tc[i], dl = extinction_depth_[i];

@@ -139,6 +139,7 @@ class FilmOperator : public OdeSystem {
   std::vector<CellProps> props_;      // scratch: props at the current state
   std::vector<double> jac_scratch_;
   std::vector<double> extinction_depth_;  // per column, m (exponential solar absorption)
+  std::vector<double> local_share_;       // per cell: absorbed share from the local phi (extinction_local)
 
   struct Cavity {
     std::unique_ptr<CavityEnclosure> solar;  // reflectances 1 - alpha

@@ -161,6 +161,11 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
                                             "Beer-Lambert extinction depth (absorption extinction; -1: from the solid fraction, (1 - phi) / (1.5 phi))");
   if (m.surface.extinction_depth_d == 0.0 && absorption == "extinction")
     r.fail("extinction_depth_d", "must be > 0 (or omitted for the value from the solid fraction)");
+  if (absorption == "extinction" && m.surface.extinction_depth_d < 0.0)
+    m.surface.extinction_local =
+        r.choice("extinction_phi", "column_mean", {"column_mean", "local"},
+                 "solid fraction of the Beer-Lambert depth from phi: the column's mean, or each cell's own (the "
+                 "optical depth through a loose top)") == "local";
   m.flux_time = read_time_factor(r.child("time", "a time history multiplying the flux (needs thermal.transient)"));
   r.finish();
 }
