@@ -141,8 +141,32 @@ BudgetResult run_thermal_budget(const config::ThermalCase& c, const BudgetSettin
       for (auto& p : r.per_input) p.share_lhs[o] = sum > 0 ? p.share_lhs[o] / sum : 0.0;
     }
   }
+  for (int o = 0; o < 3; ++o) r.total_sd[o] = r.oat_sd[o];
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
+}
+
+ReplicaSpread replica_spread_from_summary(const nlohmann::json& summary, const std::string& source) {
+  const char* const figures[3] = {"/T_out_K", "/efficiency", "/k_eff/film_mean/k_eff"};
+  if (!summary.contains("replicas") || !summary["replicas"].contains("figures"))
+    throw std::invalid_argument(source + ": no replicas.figures (a summary.json of `centrec run --replicas N`)");
+  ReplicaSpread d;
+  d.given = true;
+  d.source = source;
+  d.count = summary["replicas"].value("count", 0);
+  if (d.count < 2) throw std::invalid_argument(source + ": fewer than 2 replicas, no spread to add");
+  for (int o = 0; o < 3; ++o) {
+    const auto& f = summary["replicas"]["figures"];
+    if (!f.contains(figures[o]) || !f[figures[o]].contains("std") || !f[figures[o]]["std"].is_number())
+      throw std::invalid_argument(source + ": replicas.figures has no std of " + figures[o]);
+    d.sd[o] = f[figures[o]]["std"].get<double>();
+  }
+  return d;
+}
+
+void add_replica_spread(BudgetResult& r, const ReplicaSpread& dem) {
+  r.dem = dem;
+  for (int o = 0; o < 3; ++o) r.total_sd[o] = std::sqrt(r.oat_sd[o] * r.oat_sd[o] + dem.sd[o] * dem.sd[o]);
 }
 
 nlohmann::json budget_json(const BudgetResult& r) {
@@ -180,6 +204,11 @@ nlohmann::json budget_json(const BudgetResult& r) {
   for (const auto& o : r.lhs_outputs) outs.push_back(outputs(o));
   lhs["outputs"] = outs;
   j["latin_hypercube"] = lhs;
+  if (r.dem.given) {
+    j["dem_replicas"] = {{"source", r.dem.source}, {"count", r.dem.count}};
+    for (int o = 0; o < 3; ++o) j["dem_replicas"]["sd"][kOutputNames[o]] = r.dem.sd[o];
+  }
+  for (int o = 0; o < 3; ++o) j["total_sd"][kOutputNames[o]] = r.total_sd[o];
   j["wall_time_s"] = r.seconds;
   return j;
 }
@@ -204,6 +233,11 @@ void print_budget_table(const BudgetResult& r) {
   }
   std::printf("\none at a time (uniform inputs, linear): sd T_out %.2f K, efficiency %.4f, k_eff %.4f W/(m K)\n",
               r.oat_sd[0], r.oat_sd[1], r.oat_sd[2]);
+  if (r.dem.given)
+    std::printf("DEM seeds (%d replicas, %s): sd T_out %.2f K, efficiency %.4f, k_eff %.4f W/(m K); with the inputs: "
+                "sd T_out %.2f K, efficiency %.4f, k_eff %.4f W/(m K)\n",
+                r.dem.count, r.dem.source.c_str(), r.dem.sd[0], r.dem.sd[1], r.dem.sd[2], r.total_sd[0], r.total_sd[1],
+                r.total_sd[2]);
   const thermal::SampleStats* st = r.lhs_stats;
   std::printf("Latin hypercube, %d samples, seed %llu: T_out %.2f +- %.2f K (5-95 %% %.2f-%.2f), efficiency %.4f +- "
               "%.4f (%.4f-%.4f), k_eff %.4f +- %.4f W/(m K) (%.4f-%.4f); linear fit R^2 %.3f / %.3f / %.3f\n",

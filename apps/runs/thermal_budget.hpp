@@ -48,6 +48,17 @@ struct BudgetInputResult {
   double share_lhs[3] = {0, 0, 0};
 };
 
+// The DEM's own spread over seeds (`centrec run --replicas N`: its summary.json's
+// replicas.figures std of T_out, efficiency and k_eff), independent of the thermal inputs, so
+// it adds to the one-at-a-time variance in quadrature. Throws std::invalid_argument naming
+// what the summary lacks.
+struct ReplicaSpread {
+  bool given = false;
+  std::string source;
+  int count = 0;
+  double sd[3] = {0, 0, 0};  // T_out, efficiency, k_eff
+};
+
 struct BudgetResult {
   std::string case_path, particle;
   BudgetOutputs nominal;
@@ -60,9 +71,16 @@ struct BudgetResult {
   thermal::SampleStats lhs_stats[3];
   double lhs_r2[3] = {0, 0, 0};
   double seconds = 0.0;
+  ReplicaSpread dem;
+  double total_sd[3] = {0, 0, 0};  // one-at-a-time inputs and, if given, the DEM seeds
 };
 
+// Reads it from that summary; throws std::invalid_argument naming what the summary lacks.
+ReplicaSpread replica_spread_from_summary(const nlohmann::json& summary, const std::string& source);
+
 BudgetResult run_thermal_budget(const config::ThermalCase& c, const BudgetSettings& s);
+// With the DEM's spread: each output's sd over inputs and seeds, sqrt(oat_sd^2 + sd_dem^2).
+void add_replica_spread(BudgetResult& r, const ReplicaSpread& dem);
 nlohmann::json budget_json(const BudgetResult& r);
 void print_budget_table(const BudgetResult& r);
 

@@ -129,3 +129,29 @@ thermal:
     EXPECT_GT(moved, 1e-5) << in.name;
   }
 }
+
+// The DEM's spread over seeds, read from a `centrec run --replicas` summary, adds to the
+// inputs' one-at-a-time sd in quadrature (1e-12); a summary without replicas is refused.
+TEST(ThermalBudget, DemReplicaSpreadAddsInQuadrature) {
+  const nlohmann::json summary = {
+      {"replicas",
+       {{"count", 3},
+        {"figures",
+         {{"/T_out_K", {{"mean", 1115.49}, {"std", 0.02}}},
+          {"/efficiency", {{"mean", 0.8979}, {"std", 0.0002}}},
+          {"/k_eff/film_mean/k_eff", {{"mean", 0.936}, {"std", 0.008}}}}}}}};
+  const runs::ReplicaSpread d = runs::replica_spread_from_summary(summary, "replicas.json");
+  runs::BudgetResult r;
+  r.oat_sd[0] = 14.38;
+  r.oat_sd[1] = 0.0188;
+  r.oat_sd[2] = 0.4386;
+  runs::add_replica_spread(r, d);
+  std::printf("total sd: T_out %.6f K (sqrt(14.38^2 + 0.02^2) = %.6f), k_eff %.6f\n", r.total_sd[0],
+              std::hypot(14.38, 0.02), r.total_sd[2]);
+  EXPECT_EQ(d.count, 3);
+  EXPECT_NEAR(r.total_sd[0], std::hypot(14.38, 0.02), 1e-12);
+  EXPECT_NEAR(r.total_sd[1], std::hypot(0.0188, 0.0002), 1e-12);
+  EXPECT_NEAR(r.total_sd[2], std::hypot(0.4386, 0.008), 1e-12);
+  EXPECT_THROW(runs::replica_spread_from_summary(nlohmann::json{{"T_out_K", 1115.0}}, "plain.json"),
+               std::invalid_argument);
+}
