@@ -50,8 +50,7 @@ struct BudgetInputResult {
 
 // The DEM's own spread over seeds (`centrec run --replicas N`: its summary.json's
 // replicas.figures std of T_out, efficiency and k_eff), independent of the thermal inputs, so
-// it adds to the one-at-a-time variance in quadrature. Throws std::invalid_argument naming
-// what the summary lacks.
+// it adds to the one-at-a-time variance in quadrature.
 struct ReplicaSpread {
   bool given = false;
   std::string source;
