@@ -42,7 +42,7 @@ def case_text(q_aperture, u, model):
         "film:\n  analytic: {thickness: 6.0e-3, u_surface: %g, phi: 0.55, D_shear_coeff: 0.05, "
         "drum_diameter: %g, length: %g}\n"
         "thermal:\n  model: 2d\n  grid: {nz: 200, nxi: 40}\n  T_in: 873.15\n"
-        "  flux: {profile: uniform, q: %.6g%s}\n%s  wall: {U_w: 1.0}\n"
+        "  flux: {profile: uniform, q_film: %.6g%s}\n%s  wall: {U_w: 1.0}\n"
         % (u, DRUM, LENGTH, q_film, absorption, MODELS[model])
     )
 

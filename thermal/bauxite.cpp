@@ -5,21 +5,22 @@
 
 namespace centrec::thermal {
 
-namespace {
-constexpr double kCpCoeff = 148.2;
-constexpr double kCpExp = 0.3093;
-}  // namespace
+double PowerLawCp::cp(double T) const { return a * std::pow(T, b); }
 
-double bauxite_cp(double T) { return kCpCoeff * std::pow(T, kCpExp); }
-
-double bauxite_enthalpy_rise(double T0, double T1) {
-  const double p = kCpExp + 1.0;
-  return kCpCoeff / p * (std::pow(T1, p) - std::pow(T0, p));
+double PowerLawCp::enthalpy_rise(double T0, double T1) const {
+  const double p = b + 1.0;
+  return a / p * (std::pow(T1, p) - std::pow(T0, p));
 }
 
-double bauxite_temperature_at_enthalpy(double h) {
-  const double p = kCpExp + 1.0;
-  return std::pow(std::max(h, 0.0) * p / kCpCoeff, 1.0 / p);
+double PowerLawCp::temperature_at_enthalpy(double h) const {
+  const double p = b + 1.0;
+  return std::pow(std::max(h, 0.0) * p / a, 1.0 / p);
 }
+
+double bauxite_cp(double T) { return PowerLawCp{}.cp(T); }
+
+double bauxite_enthalpy_rise(double T0, double T1) { return PowerLawCp{}.enthalpy_rise(T0, T1); }
+
+double bauxite_temperature_at_enthalpy(double h) { return PowerLawCp{}.temperature_at_enthalpy(h); }
 
 }  // namespace centrec::thermal

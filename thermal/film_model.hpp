@@ -29,6 +29,12 @@ struct SurfaceConditions {
   // extinction coefficient of a bed of large opaque spheres, beta = 1.5 phi / ((1 - phi) d),
   // Brewster 2004, J. Heat Transfer 126, 1048). 0 and absorb_depth_layers 0: at the surface.
   double extinction_depth_d = 0;
+  // Multiplies the extinction depth, given or from phi (the error budget's perturbation;
+  // 1 changes no arithmetic).
+  double extinction_scale = 1.0;
+  // With the depth from phi (extinction_depth_d < 0): each cell's own phi instead of the
+  // column mean (thermal/solar_extinction.hpp).
+  bool extinction_local = false;
 };
 
 // The drum interior as a diffuse grey enclosure (thermal/cavity_view_factors.hpp,
@@ -40,6 +46,7 @@ struct CavitySettings {
   double wall_absorptance = 0.3;     // solar absorptance of the back plate and front annulus
   double wall_emissivity = 0.8;      // their thermal emissivity
   bool convection_correlation = true;  // Siebers & Kraabel / Stine & McDonald; false: surface.h_conv
+  double convection_scale = 1.0;       // multiplies the correlation's h (the error budget's perturbation)
   double tilt_rad = 0.7853981633974483;  // cavity axis below the horizontal (aperture facing down)
 };
 

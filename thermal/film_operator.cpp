@@ -7,6 +7,7 @@
 
 #include "cavity_convection.hpp"
 #include "physical_constants.hpp"
+#include "solar_extinction.hpp"
 
 namespace centrec::thermal {
 
@@ -30,23 +31,51 @@ FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const 
   if (!(m.alpha >= 0 && m.alpha <= 1 && m.epsilon > 0 && m.epsilon <= 1))
     throw std::invalid_argument("material: alpha must be in [0, 1] and epsilon in (0, 1]");
   if (!(model_.T_in > 0)) throw std::invalid_argument("inlet temperature must be > 0 K");
+  if (model_.flux.aperture_mean > 0.0) {
+    // The flux given through the aperture: the same power spread uniformly over the film,
+    // q_film = q_aperture A_aperture / A_film (docs/cavity_model.md, "Two bands").
+    if (!model_.cavity.enabled)
+      throw std::invalid_argument("a flux given at the aperture (flux.q_aperture) needs the cavity model: the open "
+                                  "surface has no aperture");
+    model_.flux.q = model_.flux.aperture_mean * aperture_area() / film_area();
+  }
   q_column_.resize(grid_.nz);
   for (int i = 0; i < grid_.nz; ++i) q_column_[i] = model_.flux.at(grid_.zc[i]);
   props_.resize(size());
   const double ext = model_.surface.extinction_depth_d;
-  if (ext != 0.0) {
+  if (ext < 0.0 && model_.surface.extinction_local) {
+    // Each cell's own phi: the optical depth accumulates through the loose top
+    // (thermal/solar_extinction.hpp).
+    local_share_.resize(size());
+    std::vector<double> phi(grid_.nxi);
+    for (int i = 0; i < grid_.nz; ++i) {
+      for (int j = 0; j < grid_.nxi; ++j) phi[j] = grid_.phi[grid_.index(i, j)];
+      const std::vector<double> s = local_extinction_shares(phi, grid_.deta[i], m.d, model_.surface.extinction_scale);
+      for (int j = 0; j < grid_.nxi; ++j) local_share_[grid_.index(i, j)] = s[j];
+    }
+  } else if (ext != 0.0) {
     // Exponential solar absorption: depth n d per column (n from the column's mean phi if < 0).
     for (int i = 0; i < grid_.nz; ++i) {
       double n = ext;
       if (n < 0) {
         double phi = 0.0;
         for (int j = 0; j < grid_.nxi; ++j) phi += grid_.phi[grid_.index(i, j)] / grid_.nxi;
-        n = (1.0 - phi) / (1.5 * phi);
+        n = extinction_depth_d_from_phi(phi);
       }
-      extinction_depth_.push_back(n * m.d);
+      extinction_depth_.push_back(model_.surface.extinction_scale * n * m.d);
     }
   }
   if (model_.cavity.enabled) setup_cavity();
+}
+
+double FilmOperator::film_area() const { return grid_.perimeter * grid_.length; }
+
+double FilmOperator::aperture_area() const {
+  if (!model_.cavity.enabled) return 0.0;
+  // The aperture at z = L: a disc of aperture_diameter, by default the film's drum diameter.
+  const double R = grid_.perimeter / (2.0 * kPi);
+  const double ra = model_.cavity.aperture_diameter > 0 ? std::min(0.5 * model_.cavity.aperture_diameter, R) : R;
+  return kPi * ra * ra;
 }
 
 void FilmOperator::setup_cavity() {
@@ -139,8 +168,9 @@ void FilmOperator::update_cavity(const double* T, const Inputs& in) {
       area_T += c.area[k] * Tm;
       area += c.area[k];
     }
-    c.h = cs.convection_correlation ? cavity_convection_coefficient(area_T / area, s.T_air, D, d_ap, cs.tilt_rad)
-                                    : s.h_conv;
+    c.h = cs.convection_correlation
+              ? cs.convection_scale * cavity_convection_coefficient(area_T / area, s.T_air, D, d_ap, cs.tilt_rad)
+              : s.h_conv;
     for (int k = 0; k < n; ++k) {
       double h = c.m[k] * E_env;
       const double* Mk = &c.M[static_cast<std::size_t>(k) * n];
@@ -263,6 +293,7 @@ double FilmOperator::wall_loss(int i, double T_p, double kn) const {
 }
 
 double FilmOperator::absorbed_share(int i, int j) const {
+  if (!local_share_.empty()) return local_share_[grid_.index(i, j)];
   if (!extinction_depth_.empty()) {
     // Beer-Lambert below the surface, normalised over the film depth.
     const double t = grid_.tc[i], dl = extinction_depth_[i];

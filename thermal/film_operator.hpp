@@ -91,6 +91,10 @@ class FilmOperator : public OdeSystem {
   std::vector<KeffSection> keff_sections(const double* y) const;
 
   const FilmGrid& grid() const { return grid_; }
+  // Irradiated film surface pi D_f L (m2) and the cavity's aperture disc (m2; 0 for the
+  // open surface): the two planes a solar flux can be quoted at (docs/cavity_model.md).
+  double film_area() const;
+  double aperture_area() const;
   bool cavity() const { return cavity_ != nullptr; }
   const FilmModel& model() const { return model_; }
   std::vector<double> uniform_state(double T) const { return std::vector<double>(size(), T); }
@@ -135,6 +139,7 @@ class FilmOperator : public OdeSystem {
   std::vector<CellProps> props_;      // scratch: props at the current state
   std::vector<double> jac_scratch_;
   std::vector<double> extinction_depth_;  // per column, m (exponential solar absorption)
+  std::vector<double> local_share_;       // per cell: absorbed share from the local phi (extinction_local)
 
   struct Cavity {
     std::unique_ptr<CavityEnclosure> solar;  // reflectances 1 - alpha

@@ -29,6 +29,9 @@ double FluxProfile::at(double z) const {
 void FluxProfile::check() const {
   if (kind == Kind::gaussian && !(sigma > 0.0))
     throw std::invalid_argument("Gaussian flux: sigma must be > 0");
+  if (aperture_mean < 0.0) throw std::invalid_argument("aperture flux must be >= 0");
+  if (aperture_mean > 0.0 && kind != Kind::uniform)
+    throw std::invalid_argument("a flux given at the aperture must be uniform on the film (profile uniform)");
   if (kind != Kind::table) {
     if (q < 0.0 || q_base < 0.0) throw std::invalid_argument("flux must be >= 0");
     return;

@@ -221,7 +221,7 @@ int cmd_run(const Args& args) {
   for (const auto& w : r.warnings) std::printf("  WARNING: %s\n", w.c_str());
   std::printf("  outlet temperature %.2f K (%.2f C) from %.2f K, efficiency %.4f, mdot %.4g kg/s\n", b.T_out,
               b.T_out - 273.15, r.thermal.model.T_in, b.efficiency, b.mass_flow);
-  runs::print_receiver_report(r.thermal, b);
+  runs::print_receiver_report(r.thermal, r.result);
   std::printf("  k_eff %.4g W/(m K) = bed %.4g + radiation %.4g + mixing %.4g\n", k["k_eff"].get<double>(),
               k["bed_conduction"].get<double>(), k["radiation"].get<double>(), k["mixing"].get<double>());
   std::printf("  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote %s/{summary.json,results.h5,results.xmf,film.h5}\n",

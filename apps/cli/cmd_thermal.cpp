@@ -52,7 +52,7 @@ int cmd_thermal(const Args& args) {
               "balance residual %.2e of absorbed\n",
               b.incident, b.absorbed, b.emitted, b.convected, b.wall, b.carried,
               b.absorbed > 0 ? b.residual / b.absorbed : 0.0);
-  runs::print_receiver_report(c, b);
+  runs::print_receiver_report(c, r);
   std::printf("  k_eff film mean %.4g W/(m K); steady solve %.3f s (%d Newton, %ld BDF steps)%s; total %.3f s\n",
               summary["k_eff"]["film_mean"]["k_eff"].get<double>(), r.steady_seconds, r.steady.newton_iterations,
               r.steady.stats.steps, r.has_transient ? ", transient run" : "", seconds);

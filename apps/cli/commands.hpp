@@ -16,6 +16,7 @@ struct Command {
 
 int cmd_validate(const Args& args);
 int cmd_thermal(const Args& args);
+int cmd_budget(const Args& args);
 int cmd_dem(const Args& args);
 int cmd_scale(const Args& args);
 int cmd_run(const Args& args);

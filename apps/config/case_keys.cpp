@@ -47,6 +47,7 @@ std::vector<Walk> walks() {
       {"", "film: {file: no-such-film.h5}\nthermal: {}\n", true},
       {"thermal.radiation.model: open_surface", thermal("radiation: {model: open_surface}")},
       {"thermal.flux.profile: gaussian", thermal("flux: {profile: gaussian}")},
+      {"instead of thermal.flux.q_film", thermal("flux: {q_aperture: 1.0e6}"), false, true},
       {"thermal.flux.profile: table", thermal("flux: {profile: table, table_file: no-such-table.csv}"), true},
       {"thermal.flux.absorption: layers", thermal("flux: {absorption: layers}")},
       {"thermal.conductivity.model: constant", thermal("conductivity: {model: constant, k: 1}")},

@@ -4,11 +4,13 @@
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "io/film_field_h5.hpp"
 #include "io/flux_table_csv.hpp"
 #include "thermal/analytic_film.hpp"
 #include "thermal/film_operator.hpp"
+#include "thermal/particle_data.hpp"
 
 namespace centrec::config {
 
@@ -22,8 +24,11 @@ std::string resolve_path(const std::string& case_dir, const std::string& p) {
 
 const Range kTemperature = Range::closed(1.0, 5000.0);  // K
 
-th::Material read_material(MapReader r) {
-  th::Material m;
+// The particle's own values (thermal.particle, thermal/particle_data.hpp) are the defaults of
+// k_s, alpha and epsilon; a value given here replaces the nominal one (its range stays the
+// particle's in the error budget).
+th::Material read_material(MapReader r, const th::Material& particle) {
+  th::Material m = particle;
   m.rho_s = r.number("rho_s", m.rho_s, Range::positive(), "kg/m3", "particle (solid) density");
   m.k_s = r.number("k_s", m.k_s, Range::positive(), "W/(m K)", "solid conductivity of a particle");
   m.alpha = r.number("alpha", m.alpha, Range::closed(0.0, 1.0), "", "solar absorptance of the film");
@@ -104,19 +109,36 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
   const std::string profile = r.choice("profile", "uniform", {"uniform", "gaussian", "table"},
                                        "shape of the solar flux along the drum");
   th::FluxProfile& f = m.flux;
+  // The former keys named no plane and were read as the flux on the film; they are refused,
+  // not reinterpreted, so a case written for them cannot silently change its power.
+  const struct { const char* old_key; const char* message; } kRenamed[] = {
+      {"q", "was renamed: give flux.q_film (W/m2, the sunlight's first incidence on the film: what flux.q meant) or "
+            "flux.q_aperture (W/m2, the mean flux through the cavity's aperture)"},
+      {"q_peak", "was renamed flux.q_film_peak (W/m2, the Gaussian's peak on the film: what flux.q_peak meant)"},
+      {"q_base", "was renamed flux.q_film_base (W/m2, the uniform part on the film: what flux.q_base meant)"}};
+  for (const auto& k : kRenamed)
+    if (r.has(k.old_key)) r.fail(k.old_key, k.message);
   if (profile == "uniform") {
     f.kind = th::FluxProfile::Kind::uniform;
-    f.q = r.number("q", f.q, Range::closed(0.0, 2e7), "W/m2", "uniform solar flux (profile uniform; at the aperture for a cavity)");
+    if (r.has("q_film") && r.has("q_aperture"))
+      r.fail("q_aperture", "give exactly one of flux.q_film (on the film) and flux.q_aperture (through the aperture)");
+    if (r.has("q_aperture"))
+      f.aperture_mean = r.number("q_aperture", 0.0, Range::closed(0.0, 1e8), "W/m2",
+                                 "mean solar flux through the cavity's aperture (profile uniform, cavity model; "
+                                 "spread uniformly over the film; instead of q_film)");
+    else
+      f.q = r.number("q_film", f.q, Range::closed(0.0, 2e7), "W/m2",
+                     "uniform solar flux on the film (its first incidence; profile uniform; or give q_aperture)");
   } else if (profile == "gaussian") {
     f.kind = th::FluxProfile::Kind::gaussian;
-    f.q = r.number("q_peak", f.q, Range::closed(0.0, 2e7), "W/m2", "peak of the Gaussian flux");
+    f.q = r.number("q_film_peak", f.q, Range::closed(0.0, 2e7), "W/m2", "peak of the Gaussian flux on the film");
     f.z_center = r.number("z_center", f.z_center, Range::any(), "m", "axial position of the peak");
     f.sigma = r.number("sigma", f.sigma, Range::positive(), "m", "standard deviation of the Gaussian along z");
-    f.q_base = r.number("q_base", 0.0, Range::closed(0.0, 2e7), "W/m2", "uniform flux added to the Gaussian");
+    f.q_base = r.number("q_film_base", 0.0, Range::closed(0.0, 2e7), "W/m2", "uniform flux on the film added to the Gaussian");
   } else {
     f.kind = th::FluxProfile::Kind::table;
     const std::string path =
-        resolve_path(case_dir, r.string("table_file", "", "CSV of z (m) and q (W/m2), relative to the case file"));
+        resolve_path(case_dir, r.string("table_file", "", "CSV of z (m) and q (W/m2, on the film), relative to the case file"));
     try {
       io::read_flux_table_csv(path, f.table_z, f.table_q);
       f.check();
@@ -139,6 +161,11 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
                                             "Beer-Lambert extinction depth (absorption extinction; -1: from the solid fraction, (1 - phi) / (1.5 phi))");
   if (m.surface.extinction_depth_d == 0.0 && absorption == "extinction")
     r.fail("extinction_depth_d", "must be > 0 (or omitted for the value from the solid fraction)");
+  if (absorption == "extinction" && m.surface.extinction_depth_d < 0.0)
+    m.surface.extinction_local =
+        r.choice("extinction_phi", "column_mean", {"column_mean", "local"},
+                 "solid fraction of the Beer-Lambert depth from phi: the column's mean, or each cell's own (the "
+                 "optical depth through a loose top)") == "local";
   m.flux_time = read_time_factor(r.child("time", "a time history multiplying the flux (needs thermal.transient)"));
   r.finish();
 }
@@ -187,7 +214,14 @@ void read_solver(MapReader r, ThermalCase& c) {
 void read_thermal_sections(MapReader& root, const std::string& case_dir, ThermalCase& c, bool film_from_dem) {
   MapReader t = root.child("thermal", "the film energy equation (docs/thermal_model.md)");
   th::FilmModel& m = c.model;
-  m.material = read_material(t.child("material", "the particles' thermal properties"));
+  std::vector<std::string> particles;
+  for (const th::ParticleData& p : th::particle_table()) particles.push_back(p.name);
+  c.particle = t.choice("particle", particles.front(), particles,
+                        "the particle whose c_p(T), k_s, absorptance and emissivity (with their uncertainty ranges) "
+                        "the film takes (docs/particle_data.md)");
+  th::apply_particle(th::particle_data(c.particle), m.material, m.heat);
+  m.material = read_material(t.child("material", "the particles' thermal properties (defaults: thermal.particle's)"),
+                             m.material);
   if (film_from_dem && !root.has("film"))
     c.film_source = "dem";
   else
@@ -215,7 +249,7 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   m.T_in = t.number("T_in", 873.15, kTemperature, "K", "particle inlet temperature");
   read_conductivity(t.child("conductivity", "effective conductivity of the film"), m);
   MapReader hc = t.child("heat_capacity", "the particles' specific heat");
-  if (hc.choice("model", "bauxite", {"bauxite", "constant"}, "c_p(T) of sintered bauxite, or a constant") == "constant")
+  if (hc.choice("model", "particle", {"particle", "constant"}, "c_p(T) of thermal.particle, or a constant") == "constant")
     m.heat.cp_constant = hc.required_number("cp", Range::positive(), "J/(kg K)", "the constant specific heat");
   hc.finish();
   read_flux(t.child("flux", "the concentrated solar flux"), case_dir, m);
@@ -237,6 +271,9 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
     cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg", "receiver tilt for the convection correlation (cavity model)") *
                    3.14159265358979323846 / 180.0;
   }
+  if (!cav.enabled && m.flux.aperture_mean > 0.0)
+    t.fail("flux", "gives q_aperture, the flux through the cavity's aperture, but thermal.radiation.model is "
+                   "open_surface, which has no aperture: give flux.q_film or use the cavity model");
   if (cav.enabled && c.film_source != "dem" && cav.aperture_diameter > c.film.drum_diameter * (1 + 1e-9))
     rad.fail("aperture_diameter", "exceeds the drum diameter " + std::to_string(c.film.drum_diameter) + " m of the film");
   rad.finish();

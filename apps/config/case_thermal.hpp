@@ -17,6 +17,7 @@ struct ThermalCase {
   std::string path, title;
   thermal::FilmField film;
   std::string film_source;  // "analytic" or the HDF5 file it was read from
+  std::string particle;     // thermal.particle: the name in thermal/particle_data.hpp
   thermal::FilmModel model;
   thermal::FilmGridSpec grid;
   thermal::SteadySettings steady;

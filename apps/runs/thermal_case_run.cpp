@@ -11,23 +11,24 @@ double since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
-ThermalRun run_thermal_case(const config::ThermalCase& c) {
+ThermalRun run_thermal_case(const config::ThermalCase& c, bool report) {
   ThermalRun r;
   r.op = std::make_unique<thermal::FilmOperator>(c.film, c.model, c.grid);
   thermal::FilmOperator& op = *r.op;
   op.freeze_inputs(true);
-  std::fprintf(stderr, "thermal: steady film energy equation on %d x %d cells (CVODE, then Newton)\n", op.grid().nz,
-               op.grid().nxi);
+  if (report)
+    std::fprintf(stderr, "thermal: steady film energy equation on %d x %d cells (CVODE, then Newton)\n", op.grid().nz,
+                 op.grid().nxi);
   const auto t0 = std::chrono::steady_clock::now();
   r.steady = thermal::solve_steady(op, op.uniform_state(c.model.T_in), c.steady);
   r.steady_seconds = since(t0);
-  std::fprintf(stderr, "thermal: steady state in %.2f s\n", r.steady_seconds);
+  if (report) std::fprintf(stderr, "thermal: steady state in %.2f s\n", r.steady_seconds);
   r.balance = op.balance(0.0, r.steady.y.data());
   r.fields = op.fields(0.0, r.steady.y.data());
   r.keff = op.keff_sections(r.steady.y.data());
   if (c.transient) {
     const auto t1 = std::chrono::steady_clock::now();
-    std::fprintf(stderr, "thermal: transient from the steady state\n");
+    if (report) std::fprintf(stderr, "thermal: transient from the steady state\n");
     r.transient = thermal::run_transient(op, r.steady.y, c.transient_settings);
     r.transient_seconds = since(t1);
     r.has_transient = true;

@@ -24,6 +24,7 @@ struct ThermalRun {
 };
 
 // Throws thermal::SolverError / std::invalid_argument with a clear message on failure.
-ThermalRun run_thermal_case(const config::ThermalCase& c);
+// report: the phase lines on stderr (off for the error budget's many solves).
+ThermalRun run_thermal_case(const config::ThermalCase& c, bool report = true);
 
 }  // namespace centrec::runs

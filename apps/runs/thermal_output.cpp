@@ -33,11 +33,18 @@ nlohmann::json balance_json(const thermal::FilmBalance& b) {
           {"balance_residual", b.residual}};
 }
 
-// The receiver's power flow (W): what enters through the aperture and where it goes.
-nlohmann::json receiver_json(const config::ThermalCase& c, const thermal::FilmBalance& b) {
+// Mean solar flux over a plane that the power crosses (W/m2; 0 for a plane of no area).
+double mean_flux(double power, double area) { return area > 0 ? power / area : 0.0; }
+
+// The receiver's power flow (W): what enters through the aperture and where it goes, and the
+// solar flux quoted at both planes, the film and the aperture (docs/cavity_model.md).
+nlohmann::json receiver_json(const config::ThermalCase& c, const thermal::FilmBalance& b,
+                             const thermal::FilmOperator& op) {
   const double P = b.aperture_power;
   nlohmann::json j = {{"radiation_model", c.model.cavity.enabled ? "cavity" : "open_surface"},
                       {"aperture_power_W", P},
+                      {"film_area_m2", op.film_area()},
+                      {"flux_film_mean_W_m2", mean_flux(b.incident, op.film_area())},
                       {"carried_W", b.carried},
                       {"reflected_loss_W", b.reflected_loss},
                       {"emitted_loss_W", b.emitted_loss},
@@ -50,6 +57,8 @@ nlohmann::json receiver_json(const config::ThermalCase& c, const thermal::FilmBa
                       {"balance_residual_W", b.receiver_residual},
                       {"balance_residual_relative", P > 0 ? b.receiver_residual / P : 0.0}};
   if (c.model.cavity.enabled) {
+    j["aperture_area_m2"] = op.aperture_area();
+    j["flux_aperture_mean_W_m2"] = mean_flux(P, op.aperture_area());
     j["cavity_walls_convective_loss_W"] = b.walls_convected;
     j["cavity_walls_insulation_loss_W"] = b.walls_insulation;
   } else {
@@ -86,13 +95,13 @@ struct XdmfField {
 const XdmfField kXdmfFields[] = {{"T", "K"},         {"k_n", "W/(m K)"}, {"k_bed", "W/(m K)"}, {"k_rad", "W/(m K)"},
                                  {"k_mix", "W/(m K)"}, {"u", "m/s"},        {"phi", "1"},         {"D", "m2/s"}};
 
-// Film-average of a per-section quantity over the irradiated length (equal sections).
+}  // namespace
+
 double section_mean(const std::vector<thermal::KeffSection>& k, double thermal::KeffSection::*m) {
   double s = 0.0;
   for (const auto& x : k) s += x.*m;
   return k.empty() ? 0.0 : s / k.size();
 }
-}  // namespace
 
 void write_thermal_h5(const std::string& path, const config::ThermalCase& c, const ThermalRun& r) {
   io::H5File f = io::H5File::create(path);
@@ -246,7 +255,7 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
   j["mass_flow_kg_s"] = b.mass_flow;
   j["efficiency"] = b.efficiency;
   j["powers_W"] = balance_json(b);
-  j["receiver"] = receiver_json(c, b);
+  j["receiver"] = receiver_json(c, b, *r.op);
   j["balance_residual_relative"] = b.absorbed > 0 ? b.residual / b.absorbed : 0.0;
   j["mass_flux_max_correction"] = g.max_flux_correction;
   nlohmann::json k;
@@ -296,8 +305,17 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
   return j;
 }
 
-void print_receiver_report(const config::ThermalCase& c, const thermal::FilmBalance& b) {
+void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r) {
+  const thermal::FilmBalance& b = r.balance;
   const double P = b.aperture_power;
+  const double A_film = r.op->film_area(), A_ap = r.op->aperture_area();
+  if (c.model.cavity.enabled)
+    std::printf("  solar flux: %.4g W/m2 mean on the film (first incidence, %.4g m2) = %.4g W/m2 mean through the "
+                "aperture (%.4g m2)\n",
+                mean_flux(b.incident, A_film), A_film, mean_flux(P, A_ap), A_ap);
+  else
+    std::printf("  solar flux: %.4g W/m2 mean on the film (%.4g m2; open surface: no aperture)\n",
+                mean_flux(b.incident, A_film), A_film);
   auto pct = [P](double x) { return P > 0 ? 100.0 * x / P : 0.0; };
   std::printf("  receiver (%s): aperture %.6g W -> carried %.6g W, efficiency %.4f (carried / aperture power)\n",
               c.model.cavity.enabled ? "cavity" : "open surface", P, b.carried, b.efficiency);

@@ -19,9 +19,13 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
 // The XDMF 3 of the film grid in the file named h5_name (beside it): the cell centres as
 // points (z, eta, 0), quadrilaterals between them, the steady fields as point data.
 std::string thermal_xdmf(const std::string& h5_name, const ThermalRun& r);
+// Film-average of a per-section k_eff quantity over the irradiated length (equal sections):
+// the `k_eff.film_mean` figures of summary.json.
+double section_mean(const std::vector<thermal::KeffSection>& k, double thermal::KeffSection::*m);
 nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r);
-// Two printed lines: the receiver's power flow (aperture power, carried, losses through the
-// aperture, convective and wall losses, receiver efficiency, balance residual).
-void print_receiver_report(const config::ThermalCase& c, const thermal::FilmBalance& b);
+// Three printed lines: the mean solar flux on the film and through the aperture; the
+// receiver's power flow (aperture power, carried, losses through the aperture, convective
+// and wall losses, receiver efficiency, balance residual).
+void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r);
 
 }  // namespace centrec::runs

@@ -126,7 +126,7 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
   EXPECT_EQ(interrupted_dem_run(o.cache_dir, first.cache_key), "");
 
   // Thermal-only change: same DEM key, different answer.
-  const CaseFile hotter = edited_case(dir, "q: 2.0e5", "q: 3.0e5");
+  const CaseFile hotter = edited_case(dir, "q_film: 2.0e5", "q_film: 3.0e5");
   const CoupledRun h = run_coupled_case(hotter, o);
   std::printf("flux 3e5: cached %d, T_out %.2f K\n", h.dem_cached, h.result.balance.T_out);
   EXPECT_TRUE(h.dem_cached);

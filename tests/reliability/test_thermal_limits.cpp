@@ -24,7 +24,7 @@ TEST(ThermalLimits, AZeroFluxCaseConverges) {
   // The shipped uniform-flux case without its flux, on a coarser grid.
   std::ifstream in(CENTREC_SOURCE_DIR "/cases/thermal_centrec_uniform.yaml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  text.replace(text.find("q: 1.0e6"), 8, "q: 0");
+  text.replace(text.find("q_film: 1.0e6"), 13, "q_film: 0");
   text.replace(text.find("{nz: 200, nxi: 40}"), 18, "{nz: 100, nxi: 20}");
   const config::ThermalCase c = config::read_thermal_case(write_case(dir, text));
   const runs::ThermalRun r = runs::run_thermal_case(c);
@@ -41,7 +41,7 @@ film:
   analytic: {thickness: 1.3e-3, u_surface: 1.0e-6}
 thermal:
   T_in: 873.15
-  flux: {q: 2.0e7}
+  flux: {q_film: 2.0e7}
   radiation: {model: open_surface}
   surface: {loss_factor: 0, h_conv: 0}
   wall: {adiabatic: true}
@@ -56,7 +56,7 @@ thermal:
   }
   // Given to the solver anyway (read without flux, then heated), the wall-time budget stops it.
   std::string cold = stiff;
-  cold.replace(cold.find("q: 2.0e7"), 8, "q: 0");
+  cold.replace(cold.find("q_film: 2.0e7"), 13, "q_film: 0");
   config::ThermalCase c = config::read_thermal_case(write_case(dir, cold));
   c.model.flux.q = 2.0e7;
   const auto t0 = std::chrono::steady_clock::now();

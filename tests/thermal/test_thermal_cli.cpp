@@ -37,7 +37,7 @@ film:
 thermal:
   grid: {nz: 40, nxi: 12}
   T_in: 873.15
-  flux: {q: 1.0e6}
+  flux: {q_film: 1.0e6}
 )";
 
 std::string config_error(const std::string& dir, const std::string& text) {
@@ -154,14 +154,51 @@ TEST(ThermalCli, CsvFluxTableEqualsUniformFlux) {
   std::ofstream(dir + "/flux.csv") << "z_m,q_W_m2\n# constant table\n0.0, 1.0e6\n0.5, 1.0e6\n1.0, 1.0e6\n";
   const double uniform = run_thermal_case(read_thermal_case(write_case(dir, kCase))).balance.T_out;
   const double table = run_thermal_case(read_thermal_case(write_case(
-                                            dir, replace(kCase, "flux: {q: 1.0e6}",
+                                            dir, replace(kCase, "flux: {q_film: 1.0e6}",
                                                          "flux: {profile: table, table_file: flux.csv}"))))
                            .balance.T_out;
   std::printf("T_out uniform %.9f K, constant CSV table %.9f K (tolerance 1e-9 K)\n", uniform, table);
   EXPECT_NEAR(uniform, table, 1e-9);
   std::ofstream(dir + "/bad.csv") << "0.0, 1.0e6\n0.5; 1.0e6\n";
-  const std::string e = config_error(dir, replace(kCase, "flux: {q: 1.0e6}", "flux: {profile: table, table_file: bad.csv}"));
+  const std::string e = config_error(dir, replace(kCase, "flux: {q_film: 1.0e6}", "flux: {profile: table, table_file: bad.csv}"));
   std::printf("error: %s\n", e.c_str());
   EXPECT_NE(e.find("bad.csv:2"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// `centrec budget`: its summary.json holds the nominal state (the same T_out as `centrec
+// thermal` of the case, 1e-9 K), every input with its range and both ends, and the
+// hypercube's samples (as many as asked); a coupled case without --film is refused naming
+// --film (the budget runs no DEM).
+TEST(ThermalCli, BudgetWritesItsTableAndRefusesADemFilmItDoesNotHave) {
+  const std::string dir = temp_dir("budget_cmd");
+  const std::string path = write_case(dir, kCase);
+  std::string out;
+  EXPECT_EQ(run_centrec("budget --help", &out), 0);
+  EXPECT_NE(out.find("usage: centrec budget"), std::string::npos);
+  ASSERT_EQ(run_centrec("thermal " + path + " --out " + dir + "/thermal", &out), 0) << out;
+  ASSERT_EQ(run_centrec("budget " + path + " --out " + dir + "/budget --samples 12 --seed 7", &out), 0) << out;
+  std::printf("%s", out.c_str());
+  EXPECT_NE(out.find("| c_p |"), std::string::npos);
+  std::ifstream ts(dir + "/thermal/summary.json"), bs(dir + "/budget/summary.json");
+  const nlohmann::json t = nlohmann::json::parse(ts), b = nlohmann::json::parse(bs);
+  std::printf("budget nominal T_out %.10f K, centrec thermal %.10f K\n", b["nominal"]["T_out_K"].get<double>(),
+              t["T_out_K"].get<double>());
+  EXPECT_NEAR(b["nominal"]["T_out_K"].get<double>(), t["T_out_K"].get<double>(), 1e-9);
+  EXPECT_EQ(b["latin_hypercube"]["samples"], 12);
+  EXPECT_EQ(b["latin_hypercube"]["seed"], 7);
+  EXPECT_EQ(b["latin_hypercube"]["outputs"].size(), 12u);
+  ASSERT_EQ(b["inputs"].size(), 8u);
+  for (const auto& in : b["inputs"]) {
+    EXPECT_LT(in["lo"].get<double>(), in["hi"].get<double>()) << in.dump();
+    EXPECT_TRUE(in["at_lo"].contains("T_out_K") && in["at_hi"].contains("efficiency")) << in.dump();
+    EXPECT_FALSE(in["source"].get<std::string>().empty());
+  }
+  const std::string coupled = dir + "/coupled.yaml";
+  std::ifstream src(CENTREC_SOURCE_DIR "/cases/quickstart.yaml");
+  std::ofstream(coupled) << src.rdbuf();
+  EXPECT_EQ(run_centrec("budget " + coupled + " --out " + dir + "/budget_dem", &out), 2);
+  std::printf("coupled without --film: %s", out.c_str());
+  EXPECT_NE(out.find("--film"), std::string::npos);
   std::filesystem::remove_all(dir);
 }

@@ -86,7 +86,7 @@ TEST(CaseKeys, EachKeyHasItsTypeDefaultAndRange) {
   EXPECT_EQ(find("receiver.particle_diameter").default_value, "(none)");
   // Keys only a branch reads are there, and say which branch.
   for (const auto& k : keys) {
-    if (k.key.path == "thermal.flux.q_peak") {
+    if (k.key.path == "thermal.flux.q_film_peak") {
       EXPECT_EQ(k.when, "thermal.flux.profile: gaussian");
     }
   }
