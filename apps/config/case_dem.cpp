@@ -116,6 +116,12 @@ DemCase read_dem_case(MapReader root) {
   s.initial_film.particles = film.integer("particles", 0, 0, 100000000, "particles placed at the start (0 = start empty)");
   s.initial_film.axial_from = film.number("axial_from", 0.0, Range::non_negative(), "m", "axial start of the film");
   s.initial_film.axial_to = film.number("axial_to", 0.0, Range::non_negative(), "m", "axial end of the film (0 = drum length)");
+  c.initial_film_from_run = film.string(
+      "from_run", "",
+      "a settled start: the film of that `centrec dem` run's last state (its folder, with checkpoint.h5, relative to "
+      "the case file), a slice's laid end to end or a drum's, on the same drum diameter and rough wall");
+  if (!c.initial_film_from_run.empty() && s.initial_film.particles > 0)
+    film.fail("from_run", "and initial_film.particles both given: a settled start replaces the loose film");
   film.finish();
 
   auto slice = root.child("slice", "an axially periodic slice of the drum instead of the full drum");

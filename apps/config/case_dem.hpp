@@ -27,6 +27,9 @@ struct DemCase {
   dem::scene::SceneConfig scene;
   DemRunSpec run;
   DemSamplingSpec sampling;
+  // dem.initial_film.from_run as written (relative to the case file): a settled start from
+  // that `centrec dem` run's last state (runs/settled_start.hpp); empty = none.
+  std::string initial_film_from_run;
 };
 
 // Reads `dem` (a child mapping of the case root); strict: unknown keys are errors.

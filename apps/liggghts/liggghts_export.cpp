@@ -344,6 +344,8 @@ std::vector<std::string> liggghts_inexpressible(const config::DemCase& dc) {
         "rolling friction sees the particle's absolute angular velocity; set `wall_rolling_model: liggghts` (or "
         "pass --wall-rolling-model liggghts) to run the same physics on both engines");
   if (c.drum.omega == 0.0) why.push_back("drum.speed_rpm: 0 - the deck's rotating wall needs a non-zero speed");
+  if (!dc.initial_film_from_run.empty())
+    why.push_back("initial_film.from_run - the deck starts from the case's own starting film (initial_film.particles)");
   if (c.feeder.enabled && !c.slice.enabled && c.feeder.radial_offset <= 0.5 * c.feeder.radial_height)
     why.push_back("feeder.radial_height_d - the feeder sector reaches the drum axis (not a LIGGGHTS region)");
   return why;

@@ -19,6 +19,7 @@
 #include "runs/dem_run_report.hpp"
 #include "runs/interrupt.hpp"
 #include "runs/progress_meter.hpp"
+#include "runs/settled_start.hpp"
 
 namespace centrec::runs {
 
@@ -46,7 +47,13 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   std::fprintf(stderr, "centrec dem: %s\nset-up: %s\n", cf.path.c_str(),
                ck ? ("restoring the checkpoint in " + out_dir).c_str()
                   : "building the drum, its rough wall and the initial film");
-  dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(dc.scene);
+  dem::scene::SceneConfig start = dc.scene;
+  if (!ck && !dc.initial_film_from_run.empty()) {
+    start.initial_film.settled = settled_start(cf, dc);
+    std::fprintf(stderr, "  settled start: %zu free particles from the last state of %s\n",
+                 start.initial_film.settled.size(), dc.initial_film_from_run.c_str());
+  }
+  dem::scene::CentrecScene scene = ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(start);
   auto& sim = scene.simulation();
   std::fprintf(stderr, "%s  %s\n  %s\n  %lld glued + %lld free particles, %d thread(s)\n",
                ck ? ("  resumed at t = " + std::to_string(sim.time()) + " s (" + ck->phase + ")\n").c_str() : "",

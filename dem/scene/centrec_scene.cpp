@@ -131,7 +131,9 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
     inset = cfg_.rough_wall.sphere_diameter;
   }
 
-  if (cfg_.initial_film.particles > 0) {
+  if (!cfg_.initial_film.settled.empty()) {
+    for (const InitialFilmSpec::Particle& q : cfg_.initial_film.settled) sim_->add_particle({p, q.radius, q.x, q.v, q.w});
+  } else if (cfg_.initial_film.particles > 0) {
     SizeSampler sizes(cfg_.particle, cfg_.seed + 1);
     std::vector<double> radii(static_cast<std::size_t>(cfg_.initial_film.particles));
     for (double& r : radii) r = 0.5 * sizes.next_diameter();

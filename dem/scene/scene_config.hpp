@@ -10,6 +10,7 @@
 // inlet). Angles in the cross-section are atan2(y, x) in that same sense unless a sampler
 // states otherwise.
 #include <cstdint>
+#include <vector>
 
 #include "dem/material.hpp"
 #include "dem/simulation.hpp"
@@ -63,6 +64,14 @@ struct InitialFilmSpec {
   std::int64_t particles = 0;  // 0 = start empty
   double axial_from = 0.0;     // m (drum mode; the slice fills its whole period)
   double axial_to = 0.0;       // m; 0 = drum length
+  // A settled start instead of the loose lattice: free particles laid in from an earlier
+  // run's last state (dem/scene/settled_start.hpp), set by the run from
+  // dem.initial_film.from_run. Empty: the loose lattice of `particles`.
+  struct Particle {
+    double radius = 0.0;  // m
+    Vec3 x, v, w;         // m, m/s, rad/s
+  };
+  std::vector<Particle> settled;
 };
 
 // Axially periodic slice of the drum: no feeder, no outlet, no plates.

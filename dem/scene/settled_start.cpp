@@ -1,0 +1,83 @@
+#include "dem/scene/settled_start.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "dem/first_half_step.hpp"
+
+namespace centrec::dem::scene {
+
+namespace {
+
+bool same(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::max(std::fabs(a), std::fabs(b)); }
+
+[[noreturn]] void refuse(const std::string& what) {
+  throw std::invalid_argument("dem.initial_film.from_run: " + what);
+}
+
+// Axial distance between lattice rows and the first row's centre, as wall_lattice.cpp lays them.
+struct Rows {
+  double spacing = 0.0, first = 0.0;
+};
+Rows lattice_rows(const SceneConfig& c) {
+  const RoughWallSpec& w = c.rough_wall;
+  const double row = w.lattice == Lattice::hexagonal ? w.spacing * std::sqrt(3.0) / 2.0 : w.spacing;
+  if (!c.slice.enabled) return {row, 0.5 * w.sphere_diameter};
+  int n = static_cast<int>(std::floor(c.slice.length / row));
+  if (w.lattice == Lattice::hexagonal && n % 2) --n;
+  const double dz = c.slice.length / n;
+  return {dz, 0.5 * dz};
+}
+
+}  // namespace
+
+std::vector<InitialFilmSpec::Particle> settled_film(const SceneConfig& source, const SimulationState& state,
+                                                    const SceneConfig& target) {
+  if (target.slice.enabled) refuse("a slice fills its period itself; a settled start is for a drum");
+  if (!same(source.drum.diameter, target.drum.diameter))
+    refuse("the run's drum diameter " + std::to_string(source.drum.diameter) + " m differs from this case's " +
+           std::to_string(target.drum.diameter) + " m (dem.drum.diameter)");
+  if (!same(source.particle.diameter, target.particle.diameter))
+    refuse("the run's particle diameter differs from this case's (dem.particle)");
+  const RoughWallSpec &a = source.rough_wall, &b = target.rough_wall;
+  if (a.enabled != b.enabled || (b.enabled && (a.lattice != b.lattice || !same(a.spacing, b.spacing) ||
+                                               !same(a.sphere_diameter, b.sphere_diameter))))
+    refuse("the run's rough wall (dem.rough_wall: lattice, spacing, sphere diameter) differs from this case's");
+  double shift = 0.0;  // axial offset that puts the source's lattice rows on the target's
+  double period = 0.0;
+  if (source.slice.enabled) {
+    period = source.slice.length;
+    if (b.enabled) {
+      const Rows s = lattice_rows(source), t = lattice_rows(target);
+      if (!same(s.spacing, t.spacing))
+        refuse("the slice's lattice rows are " + std::to_string(s.spacing) + " m apart, the drum's " +
+               std::to_string(t.spacing) + " m: give the slice a length of whole rows (dem.slice.length_d)");
+      shift = t.first - s.first;
+    }
+  }
+  const double L = target.drum.length;
+  // Turn back by the angle the state's drum has turned; re-base the motion to the new speed.
+  const double angle = state.drum_angle, c = std::cos(angle), s = std::sin(angle);
+  const Vec3 axis{0, 0, 1};
+  const double w_old = source.drum.omega, w_new = target.drum.omega;
+  std::vector<InitialFilmSpec::Particle> out;
+  for (std::size_t i = 0; i < state.id.size(); ++i) {
+    if (state.motion[i] != Motion::free) continue;
+    const double r = state.radius[i];
+    const Vec3 x = rotate(state.x[i], axis, c, -s);
+    const Vec3 v_wall_frame = rotate(state.v[i] - cross(w_old * axis, state.x[i]), axis, c, -s);
+    const Vec3 w_wall_frame = rotate(state.w[i] - w_old * axis, axis, c, -s);
+    const int copies = source.slice.enabled ? static_cast<int>(std::ceil(L / period)) + 1 : 1;
+    for (int k = 0; k < copies; ++k) {
+      Vec3 p = x;
+      p.z += shift + k * period;
+      if (p.z < r || p.z > L - r) continue;  // would cross the back plate or the outlet
+      out.push_back({r, p, v_wall_frame + cross(w_new * axis, p), w_wall_frame + w_new * axis});
+    }
+  }
+  if (out.empty()) refuse("the run's state holds no free particle inside this drum's length");
+  return out;
+}
+
+}  // namespace centrec::dem::scene
