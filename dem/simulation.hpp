@@ -98,6 +98,9 @@ struct EngineTimes {
   double first_half = 0.0;       // s: the first half step of each step() call, a sweep of its own
   double neighbour_build = 0.0;  // s: full rebuilds (spatial sort, neighbour list, share routing)
   double list_edit = 0.0;        // s: particles added to or removed from the lists without a rebuild
+  // Of force_pass: the mean time a thread waited for the slowest in the pair pass and in
+  // the parked pass (load imbalance between the row ranges).
+  double pair_pass_idle = 0.0, parked_pass_idle = 0.0;
 };
 
 // Thrown when a run blows up; what() names particle id, step, overlap and likely cause.

@@ -15,6 +15,7 @@
 // Each step's arithmetic is written once, in a fixed operation order: results are the
 // same bits for any thread count.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -389,6 +390,18 @@ struct ForcePass {
   }
 };
 
+// Speed records: the mean time a part of a pass waited for the slowest (threads idle).
+template <class Parts>
+void record_imbalance(const Parts& parts, double& idle) {
+  if (parts.size() < 2) return;
+  double most = 0.0, sum = 0.0;
+  for (const auto& p : parts) {
+    most = std::max(most, p.busy);
+    sum += p.busy;
+  }
+  idle += most - sum / static_cast<double>(parts.size());
+}
+
 }  // namespace
 
 double Simulation::compute_forces(bool update_history, AfterForces after) {
@@ -430,11 +443,14 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   // Pass 1: each range of rows on its thread; each pair once, in the row of its lower
   // index (steps 1-3 above).
   // (Each part's largest displacement in its own slot, padded to a cache line.)
+  // (Each part's largest displacement and busy time in its own slot, padded to a cache line.)
   struct alignas(64) PartMax {
-    double d2 = 0.0;
+    double d2 = 0.0, busy = 0.0;
   };
   std::vector<PartMax> part_max(static_cast<std::size_t>(parts));
+  using clock = std::chrono::steady_clock;
   im.team->run(static_cast<int>(parts), [&](int part) {
+    const auto t0 = clock::now();
     double d2 = 0.0;
     for (long b = im.routing.range_start[part]; b < im.routing.range_start[part + 1]; ++b) {
       BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
@@ -442,10 +458,13 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
       d2 = std::max(d2, pass.sweep_rows(b * kBlock, std::min(n, (b + 1) * kBlock), tally));
     }
     part_max[static_cast<std::size_t>(part)].d2 = d2;
+    part_max[static_cast<std::size_t>(part)].busy = std::chrono::duration<double>(clock::now() - t0).count();
   });
+  record_imbalance(part_max, times_.pair_pass_idle);
   // Pass 2: the parked particles (step 4), in ranges of equal numbers of them.
   if (im.routing.parked() > 0) {
     im.team->run(static_cast<int>(parts), [&](int part) {
+      const auto t0 = clock::now();
       double d2 = 0.0;
       for (long b = im.routing.parked_range_start[part]; b < im.routing.parked_range_start[part + 1]; ++b) {
         BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
@@ -454,7 +473,9 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
           if (pass.park_start[j] != pass.park_start[j + 1]) d2 = std::max(d2, pass.parked_total(j, tally));
       }
       part_max[static_cast<std::size_t>(part)].d2 = std::max(part_max[static_cast<std::size_t>(part)].d2, d2);
+      part_max[static_cast<std::size_t>(part)].busy = std::chrono::duration<double>(clock::now() - t0).count();
     });
+    record_imbalance(part_max, times_.parked_pass_idle);
   }
   double max_d2 = 0.0;
   for (const PartMax& m : part_max) max_d2 = std::max(max_d2, m.d2);

@@ -48,6 +48,7 @@ struct DemRunResult {
   // another engine. Their sum is the run's wall time ("other": what no phase timer holds).
   std::vector<std::pair<std::string, double>> phase_seconds;
   std::int64_t neighbour_rebuilds = -1, list_edits = -1;  // this process's (< 0: unknown)
+  double pair_pass_idle = 0.0, parked_pass_idle = 0.0;   // s of force_pass threads waited (EngineTimes)
   std::vector<dem::scene::ControllerWindow> controller;  // slice holdup controller windows
   dem::scene::FilmFields fields;
   std::vector<NamedSnapshot> snapshots;

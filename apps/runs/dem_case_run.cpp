@@ -267,6 +267,8 @@ io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemC
   r.wall_time = wall;
   r.neighbour_rebuilds = static_cast<std::int64_t>(sim.neighbour_stats().rebuilds - rebuilds_at_start);
   r.list_edits = static_cast<std::int64_t>(sim.neighbour_stats().list_edits - edits_at_start);
+  r.pair_pass_idle = sim.times().pair_pass_idle - engine_at_start.pair_pass_idle;
+  r.parked_pass_idle = sim.times().parked_pass_idle - engine_at_start.parked_pass_idle;
   if (!ck) {  // a resumed run's timers start at its resumption
     const dem::EngineTimes& e = sim.times();
     const dem::EngineTimes& e0 = engine_at_start;

@@ -106,6 +106,7 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
   if (r.neighbour_rebuilds >= 0) {
     j["neighbour_rebuilds"] = r.neighbour_rebuilds;
     j["neighbour_list_edits"] = r.list_edits;
+    j["force_pass_thread_idle_s"] = {{"pair_pass", r.pair_pass_idle}, {"parked_pass", r.parked_pass_idle}};
   }
   j["sampled_turns"] = fields.turns;
   if (fields.snapshots > 0) {
@@ -166,6 +167,9 @@ void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf
                   static_cast<long long>(r.neighbour_rebuilds),
                   r.neighbour_rebuilds > 0 ? static_cast<double>(r.steps) / static_cast<double>(r.neighbour_rebuilds) : 0.0,
                   static_cast<long long>(r.list_edits));
+    if (r.threads > 1)
+      std::printf("force pass: threads waited %.1f s in the pair pass and %.1f s in the parked pass for the slowest\n",
+                  r.pair_pass_idle, r.parked_pass_idle);
   }
   const double asked = dc.scene.feeder.mass_flow;
   if (dc.scene.feeder.enabled && !dc.scene.slice.enabled && r.feeder_deferred > 0 && flows.fed < 0.9 * asked)
