@@ -120,6 +120,7 @@ Row time_liggghts(const config::CaseFile& cf, const config::DemCase& dc, const i
   config::DemCase d = dc;
   d.run.duration = static_cast<double>(steps) * d.scene.dt;  // one timed run (rounded up to dump intervals)
   d.sampling.turns = 0;
+  d.initial_film_from_run.clear();  // the checkpoint's state is the starting film
   const liggghts::LiggghtsDeckPlan plan = liggghts::export_liggghts(cf, d, dir, &ck.scene);
   liggghts::LiggghtsLaunch l;
   l.ranks = ranks;
