@@ -18,14 +18,6 @@ namespace centrec::dem {
 namespace {
 
 
-// Rows of `width` elements: row k of the result is row order[k] of a.
-template <class T>
-void permute(std::vector<T>& a, const std::vector<std::int32_t>& order, std::size_t width) {
-  std::vector<T> out(order.size() * width);
-  for (std::size_t k = 0; k < order.size(); ++k)
-    for (std::size_t c = 0; c < width; ++c) out[k * width + c] = a[static_cast<std::size_t>(order[k]) * width + c];
-  a.swap(out);
-}
 
 template <class T>
 std::size_t bytes_of(const std::vector<T>& a) {
@@ -206,7 +198,7 @@ void Simulation::invalidate_list() {
 
 void Simulation::permute_particles(const std::vector<std::int32_t>& order) {
   for_each_particle_array([&](auto array, auto, const char*, const char*, bool per_wall) {
-    permute(this->*array, order, row_width(per_wall));
+    permute_rows(this->*array, order, row_width(per_wall));
   });
 }
 

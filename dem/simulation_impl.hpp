@@ -19,6 +19,16 @@ namespace centrec::dem {
 inline constexpr long kBlock = 256;
 inline constexpr int kMaxWalls = 32;  // wall candidates are a 32-bit mask per particle
 
+// Rows of `width` elements: row k of the result is row order[k] of a (the order may be
+// shorter than a's rows: the rows it leaves out are dropped).
+template <class T>
+void permute_rows(std::vector<T>& a, const std::vector<std::int32_t>& order, std::size_t width = 1) {
+  std::vector<T> out(order.size() * width);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    for (std::size_t c = 0; c < width; ++c) out[k * width + c] = a[static_cast<std::size_t>(order[k]) * width + c];
+  a.swap(out);
+}
+
 struct BlockTally {
   std::vector<Vec3> wall_force;  // one per wall
   std::size_t pair_contacts = 0, wall_contacts = 0;

@@ -132,14 +132,8 @@ void Simulation::remove_from_lists(const std::vector<std::int32_t>& order, const
   im.list = std::move(kept);
   im.touch = std::move(touch);
   permute_particles(order);
-  std::vector<Vec3> x_build(order.size());
-  std::vector<std::uint32_t> wall_mask(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    x_build[k] = im.x_build[static_cast<std::size_t>(order[k])];
-    wall_mask[k] = im.wall_mask[static_cast<std::size_t>(order[k])];
-  }
-  im.x_build.swap(x_build);
-  im.wall_mask.swap(wall_mask);
+  permute_rows(im.x_build, order);
+  permute_rows(im.wall_mask, order);
   im.acc_f.assign(order.size(), Vec3{});
   im.acc_t.assign(order.size(), Vec3{});
   im.routing = PartnerRouting{};

@@ -24,6 +24,7 @@
 #include "liggghts/liggghts_export.hpp"
 #include "liggghts/liggghts_launch.hpp"
 #include "liggghts/liggghts_log_reader.hpp"
+#include "runs/settled_start.hpp"
 
 namespace {
 
@@ -50,12 +51,6 @@ std::vector<double> phase_times(const dem::scene::CentrecScene& scene) {
   const dem::scene::SceneTimes& t = scene.times();
   return {e.force_pass, e.pair_pass_idle, e.parked_pass_idle, e.first_half, e.neighbour_build, e.list_edit,
           t.insertion, t.outlet, t.bookkeeping};
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 Row time_centrec(const config::DemCase& dc, const io::RunCheckpoint& ck, int threads, long settle, long steps,
@@ -103,11 +98,9 @@ Row time_centrec(const config::DemCase& dc, const io::RunCheckpoint& ck, int thr
   row.free_particles = m.moving_steps / steps;
   row.rebuilds = m.rebuilds;
   row.edits = m.edits;
-  std::vector<double> all;
-  for (const Phase& p : phases) all.push_back(p.seconds);
   char b[128];
-  std::snprintf(b, sizeof b, "phases %.3g-%.3g s (median %.3g)", *std::min_element(all.begin(), all.end()),
-                *std::max_element(all.begin(), all.end()), median(all));
+  std::snprintf(b, sizeof b, "phases %.3g-%.3g s (median %.3g)", phases[order.front()].seconds,
+                phases[order.back()].seconds, m.seconds);
   row.note = b;
   return row;
 }
@@ -168,8 +161,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     const io::RunCheckpoint ck = io::read_checkpoint(from);
-    const config::CaseFile cf = config::read_case_text(ck.resolved_yaml, ck.case_path);
-    if (!cf.dem) throw std::invalid_argument(from + ": its case has no dem: section");
+    const config::CaseFile cf = runs::drum_case_of(ck);
     config::DemCase dc = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, {});
     if (dc.scene.slice.enabled || !dc.scene.feeder.enabled)
       throw std::invalid_argument(from + ": not a fed drum (this benchmark times the feeder and the outlet too)");

@@ -6,7 +6,14 @@
 #include "config/case_dem.hpp"
 #include "config/case_file.hpp"
 
+#include "io/checkpoint_h5.hpp"
+
 namespace centrec::runs {
+
+// The dem: and receiver: sections of the case a checkpoint's run used, as a case of its own:
+// the drum that ran (its other sections may hold keys of another version of this program).
+// Throws std::invalid_argument if it has no dem: section.
+config::CaseFile drum_case_of(const io::RunCheckpoint& ck);
 
 // The settled film for dc's drum from the run named by dc.initial_film_from_run (relative
 // to cf's folder). Throws config::ConfigError naming the key and the reason.
