@@ -12,10 +12,12 @@ std::size_t NeighbourList::bytes() const {
          nbr.capacity() * sizeof(std::int32_t) + hist.capacity() * sizeof(ContactHistory);
 }
 
-NeighbourList carry_contacts(const NeighbourList& old, const std::vector<std::int32_t>& order,
-                             const std::vector<std::int32_t>& new_of_old) {
-  NeighbourList out;
+void carry_contacts(const NeighbourList& old, const std::vector<std::int32_t>& order,
+                    const std::vector<std::int32_t>& new_of_old, NeighbourList& out) {
   out.start.assign(order.size() + 1, 0);
+  out.nbr.clear();
+  out.hist.clear();
+  out.reach = 0;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::size_t o = static_cast<std::size_t>(order[k]);
     if (o < old.rows()) {
@@ -28,7 +30,6 @@ NeighbourList carry_contacts(const NeighbourList& old, const std::vector<std::in
     }
     out.start[k + 1] = static_cast<std::uint32_t>(out.nbr.size());
   }
-  return out;
 }
 
 long CellGrid::cell_of(Vec3 x) const {
@@ -92,76 +93,115 @@ std::vector<std::int32_t> sort_into_cells(CellGrid& grid, const std::vector<Vec3
 
 namespace {
 
-// Calls f(j) for every particle j in the 27 cells around cell (ix, iy, iz) (each once).
-template <class F>
-inline void for_each_near(const CellGrid& g, long ix, long iy, long iz, F&& f) {
-  const long x0 = std::max(ix - 1, 0L), x1 = std::min(ix + 1, static_cast<long>(g.nx) - 1);
-  for (long dz = -1; dz <= 1; ++dz) {
-    long z = iz + dz;
-    if (g.periodic) {
-      z = (z + g.nz) % g.nz;
-    } else if (z < 0 || z >= g.nz) {
-      continue;
-    }
-    for (long y = std::max(iy - 1, 0L); y <= std::min(iy + 1, static_cast<long>(g.ny) - 1); ++y) {
-      // Cells x0..x1 of one row are contiguous, so are their particles.
-      const long row = g.nx * (y + g.ny * z);
-      const std::int32_t b = g.cell_start[static_cast<std::size_t>(row + x0)];
-      const std::int32_t e = g.cell_start[static_cast<std::size_t>(row + x1 + 1)];
-      for (std::int32_t j = b; j < e; ++j) f(j);
+// Speed: the particles of the 27 cells around a cell as the runs of indices [b, e) they
+// occupy (cells x-1 .. x+1 of one y, z row are contiguous, so are their particles), worked
+// out once per cell rather than once per particle (particles are in cell order, so a part's
+// rows walk the cells in order). Runs in the order dz, dy, then x ascending.
+struct NearRuns {
+  int count = 0;
+  std::int32_t b[9], e[9];
+
+  NearRuns(const CellGrid& g, long c) {
+    const long ix = c % g.nx, iy = (c / g.nx) % g.ny, iz = c / (static_cast<long>(g.nx) * g.ny);
+    const long x0 = std::max(ix - 1, 0L), x1 = std::min(ix + 1, static_cast<long>(g.nx) - 1);
+    for (long dz = -1; dz <= 1; ++dz) {
+      long z = iz + dz;
+      if (g.periodic) {
+        z = (z + g.nz) % g.nz;
+      } else if (z < 0 || z >= g.nz) {
+        continue;
+      }
+      for (long y = std::max(iy - 1, 0L); y <= std::min(iy + 1, static_cast<long>(g.ny) - 1); ++y) {
+        const long row = g.nx * (y + g.ny * z);
+        b[count] = g.cell_start[static_cast<std::size_t>(row + x0)];
+        e[count] = g.cell_start[static_cast<std::size_t>(row + x1 + 1)];
+        ++count;
+      }
     }
   }
-}
+};
 
 }  // namespace
 
 namespace {
 
-// History of pair (i, j) in `carried`, which may hold it in row i or in row j.
-const ContactHistory* find_carried(const NeighbourList& carried, std::int32_t i, std::int32_t j) {
-  auto search = [&](std::int32_t row, std::int32_t partner) -> const ContactHistory* {
-    if (static_cast<std::size_t>(row) >= carried.rows()) return nullptr;
-    for (std::uint32_t e = carried.start[row]; e < carried.start[row + 1]; ++e)
-      if (carried.nbr[e] == partner) return &carried.hist[e];
-    return nullptr;
-  };
-  const ContactHistory* h = search(i, j);
-  return h ? h : search(j, i);
+// The histories of `carried` (same numbering; a pair in either of its two rows there) into
+// the entries of `out` that list the same pairs, each in the row of its lower index. Worked
+// from the carried contacts (a few per particle), each looked up in the one row of `out`
+// that can hold it, not from every entry of `out` searched for in two carried rows: the
+// result is the same, a contact listed once in each. Parts write disjoint entries.
+void carry_histories(NeighbourList& out, const NeighbourList& carried, ThreadTeam& team) {
+  const long rows = static_cast<long>(std::min(carried.rows(), out.rows()));
+  if (carried.nbr.empty() || rows == 0) return;
+  const int parts = rows >= kMinParallelParticles ? team.size() : 1;
+  team.run(parts, [&](int p) {
+    for (long a = range_begin(rows, parts, p); a < range_begin(rows, parts, p + 1); ++a)
+      for (std::uint32_t e = carried.start[a]; e < carried.start[a + 1]; ++e) {
+        const std::int32_t b = carried.nbr[e];
+        const std::int32_t row = std::min(static_cast<std::int32_t>(a), b);
+        const std::int32_t partner = std::max(static_cast<std::int32_t>(a), b);
+        if (static_cast<std::size_t>(row) >= out.rows()) continue;
+        for (std::uint32_t k = out.start[row]; k < out.start[row + 1]; ++k)
+          if (out.nbr[k] == partner) {
+            out.hist[k] = carried.hist[e];
+            break;
+          }
+      }
+  });
 }
 
 }  // namespace
 
 void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
-                          const PeriodicZ& pz, const NeighbourList& carried, ThreadTeam& team) {
+                          const PeriodicZ& pz, const NeighbourList& carried, ThreadTeam& team,
+                          ListBuildScratch& scratch) {
   const long n = static_cast<long>(x.size());
   std::vector<std::uint32_t> count(static_cast<std::size_t>(n) + 1, 0);
-  auto scan = [&](long i, auto&& emit) {
+  // Row i lists j > i: a run's particles of lower index are skipped without being read.
+  auto scan = [&](long i, const NearRuns& near, auto&& emit) {
     const Vec3 xi = x[i];
     const double ri = r[i];
     const bool i_free = motion[i] == Motion::free;
-    const long c = g.cell_of(xi);
-    const long ix = c % g.nx, iy = (c / g.nx) % g.ny, iz = c / (static_cast<long>(g.nx) * g.ny);
-    for_each_near(g, ix, iy, iz, [&](std::int32_t j) {
-      if (j <= i || (!i_free && motion[j] != Motion::free)) return;
-      Vec3 d = xi - x[j];
-      d.z = pz.image(d.z);
-      const double cut = ri + r[j] + skin;
-      if (norm2(d) < cut * cut) emit(j);
-    });
+    for (int k = 0; k < near.count; ++k)
+      for (std::int32_t j = std::max(near.b[k], static_cast<std::int32_t>(i + 1)); j < near.e[k]; ++j) {
+        if (!i_free && motion[j] != Motion::free) continue;
+        Vec3 d = xi - x[j];
+        d.z = pz.image(d.z);
+        const double cut = ri + r[j] + skin;
+        if (norm2(d) < cut * cut) emit(j);
+      }
   };
   // One search per particle: each part lists its rows' partners into a buffer of its own,
   // then the buffers are laid end to end (a count pass first would search twice).
   const int parts = n >= kMinParallelParticles ? team.size() : 1;
-  std::vector<std::vector<std::int32_t>> part_nbr(static_cast<std::size_t>(parts));
+  std::vector<std::vector<std::int32_t>>& part_nbr = scratch.part_nbr;
+  part_nbr.resize(static_cast<std::size_t>(parts));
+  std::vector<long> part_reach(static_cast<std::size_t>(parts), 0);
   team.run(parts, [&](int p) {
     std::vector<std::int32_t>& buf = part_nbr[static_cast<std::size_t>(p)];
-    buf.reserve(static_cast<std::size_t>(8 * (range_begin(n, parts, p + 1) - range_begin(n, parts, p))));
-    for (long i = range_begin(n, parts, p); i < range_begin(n, parts, p + 1); ++i) {
+    buf.clear();
+    const long i0 = range_begin(n, parts, p), i1 = range_begin(n, parts, p + 1);
+    if (i0 == i1) return;
+    buf.reserve(static_cast<std::size_t>(8 * (i1 - i0)));
+    // The cell of row i0: the last cell starting at or before it.
+    long c = std::upper_bound(g.cell_start.begin(), g.cell_start.end(), static_cast<std::int32_t>(i0)) -
+             g.cell_start.begin() - 1;
+    NearRuns near(g, c);
+    long reach = 0;
+    for (long i = i0; i < i1; ++i) {
+      if (g.cell_start[static_cast<std::size_t>(c) + 1] <= i) {
+        while (g.cell_start[static_cast<std::size_t>(c) + 1] <= i) ++c;
+        near = NearRuns(g, c);
+      }
       const std::size_t before = buf.size();
-      scan(i, [&](std::int32_t j) { buf.push_back(j); });
+      scan(i, near, [&](std::int32_t j) {
+        buf.push_back(j);
+        if (j - i <= n / 2) reach = std::max(reach, j - i);  // not round a periodic boundary
+      });
       count[i + 1] = static_cast<std::uint32_t>(buf.size() - before);
     }
+    part_reach[static_cast<std::size_t>(p)] = reach;
   });
   for (long i = 0; i < n; ++i) count[i + 1] += count[i];
   out.start = std::move(count);
@@ -169,17 +209,10 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
   out.hist.assign(out.start[n], ContactHistory{});
   team.run(parts, [&](int p) {
     const std::vector<std::int32_t>& buf = part_nbr[static_cast<std::size_t>(p)];
-    const long i0 = range_begin(n, parts, p);
-    std::copy(buf.begin(), buf.end(), out.nbr.begin() + out.start[i0]);
-    if (carried.nbr.empty()) return;
-    for (long i = i0; i < range_begin(n, parts, p + 1); ++i)
-      for (std::uint32_t k = out.start[i]; k < out.start[i + 1]; ++k)
-        if (const ContactHistory* h = find_carried(carried, static_cast<std::int32_t>(i), out.nbr[k])) out.hist[k] = *h;
+    std::copy(buf.begin(), buf.end(), out.nbr.begin() + out.start[range_begin(n, parts, p)]);
   });
-  out.reach = 0;
-  for (long i = 0; i < n; ++i)
-    for (std::uint32_t e = out.start[i]; e < out.start[i + 1]; ++e)
-      if (const long d = out.nbr[e] - i; d <= n / 2) out.reach = std::max(out.reach, d);
+  carry_histories(out, carried, team);
+  out.reach = *std::max_element(part_reach.begin(), part_reach.end());
 }
 
 }  // namespace centrec::dem

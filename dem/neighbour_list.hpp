@@ -30,11 +30,12 @@ struct NeighbourList {
   std::size_t bytes() const;
 };
 
-// Entries of `old` with non-zero history, moved to the new numbering: new row k is old
-// row order[k]; partners are renumbered by new_of_old (-1 = removed: entry dropped).
-// Rows of particles added after `old` was built (order[k] >= old.rows()) are empty.
-NeighbourList carry_contacts(const NeighbourList& old, const std::vector<std::int32_t>& order,
-                             const std::vector<std::int32_t>& new_of_old);
+// Entries of `old` with non-zero history, moved to the new numbering, into `out` (not
+// `old`; its storage is reused): new row k is old row order[k]; partners are renumbered
+// by new_of_old (-1 = removed: entry dropped). Rows of particles added after `old` was
+// built (order[k] >= old.rows()) are empty.
+void carry_contacts(const NeighbourList& old, const std::vector<std::int32_t>& order,
+                    const std::vector<std::int32_t>& new_of_old, NeighbourList& out);
 
 // Uniform cell grid with cells no smaller than the interaction cut-off.
 struct CellGrid {
@@ -55,12 +56,19 @@ struct CellGrid {
 std::vector<std::int32_t> sort_into_cells(CellGrid& grid, const std::vector<Vec3>& x, double cutoff,
                                           const PeriodicZ& pz);
 
+// Speed: build_neighbour_list's per-thread buffers, kept from one build to the next so a
+// build does not fault in fresh pages.
+struct ListBuildScratch {
+  std::vector<std::vector<std::int32_t>> part_nbr;
+};
+
 // Half list of particles already in cell order: row i holds j > i with
 // |x_i - x_j| < r_i + r_j + skin, unless neither is Motion::free (nothing to compute).
 // Histories are taken from `carried` (same numbering; a pair may sit in either of its two
 // rows there), others start at zero.
 void build_neighbour_list(NeighbourList& out, const CellGrid& grid, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
-                          const PeriodicZ& pz, const NeighbourList& carried, ThreadTeam& team);
+                          const PeriodicZ& pz, const NeighbourList& carried, ThreadTeam& team,
+                          ListBuildScratch& scratch);
 
 }  // namespace centrec::dem

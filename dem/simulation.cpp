@@ -192,7 +192,7 @@ void Simulation::invalidate_list() {
   if (dirty_) return;
   std::vector<std::int32_t> ident(x_.size());
   for (std::size_t i = 0; i < ident.size(); ++i) ident[i] = static_cast<std::int32_t>(i);
-  impl_->carried = carry_contacts(impl_->list, ident, ident);
+  carry_contacts(impl_->list, ident, ident, impl_->carried);
   dirty_ = true;
 }
 
@@ -219,7 +219,9 @@ std::size_t Simulation::remove_particles(const std::vector<std::int64_t>& ids) {
     return removed;
   }
   invalidate_list();
-  impl_->carried = carry_contacts(impl_->carried, order, new_of_old);
+  NeighbourList kept;
+  carry_contacts(impl_->carried, order, new_of_old, kept);
+  impl_->carried = std::move(kept);
   permute_particles(order);
   return removed;
 }
@@ -332,16 +334,18 @@ void Simulation::rebuild() {
   std::vector<std::int32_t> order = sort_into_cells(im.grid, x_, cutoff > 0 ? cutoff : 1.0, im.pz);
   std::vector<std::int32_t> new_of_old(order.size());
   for (std::size_t k = 0; k < order.size(); ++k) new_of_old[static_cast<std::size_t>(order[k])] = static_cast<std::int32_t>(k);
-  const NeighbourList carried = carry_contacts(dirty_ ? im.carried : im.list, order, new_of_old);
+  carry_contacts(dirty_ ? im.carried : im.list, order, new_of_old, im.carry_buffer);
   permute_particles(order);
-  build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.pz, carried, *im.team);
+  build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.pz, im.carry_buffer, *im.team, im.build_scratch);
   im.touch.resize(im.list.nbr.size());
   for (std::size_t e = 0; e < im.touch.size(); ++e) im.touch[e] = !is_zero(im.list.hist[e]);
   im.routing = PartnerRouting{};  // planned by the next force pass, for its thread count
   im.share.clear();
   im.acc_f.assign(x_.size(), Vec3{});
   im.acc_t.assign(x_.size(), Vec3{});
-  im.carried = NeighbourList{};
+  im.carried.nbr.clear();
+  im.carried.hist.clear();
+  im.carried.start.clear();
 
   const std::size_t n = x_.size();
   im.x_build = x_;

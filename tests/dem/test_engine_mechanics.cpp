@@ -211,7 +211,8 @@ TEST(EngineMechanics, NeighbourListReachSkipsPeriodicWrapEntries) {
   for (std::size_t k = 0; k < order.size(); ++k) ASSERT_EQ(order[k], static_cast<std::int32_t>(k));
   NeighbourList list;
   ThreadTeam serial(1);
-  build_neighbour_list(list, grid, x, r, motion, 0.1, pz, NeighbourList{}, serial);
+  ListBuildScratch scratch;
+  build_neighbour_list(list, grid, x, r, motion, 0.1, pz, NeighbourList{}, serial, scratch);
   ASSERT_EQ(list.nbr.size(), 10u);  // 9 links along the chain and the one across the period
   bool wrap_entry = false;
   for (std::uint32_t e = list.start[0]; e < list.start[1]; ++e) wrap_entry |= list.nbr[e] == 9;
@@ -221,9 +222,48 @@ TEST(EngineMechanics, NeighbourListReachSkipsPeriodicWrapEntries) {
   // A skin of 1.2 takes in second neighbours: rows reach two ahead, and across the period
   // (0-8, 0-9, 1-9) eight or nine, which do not count.
   sort_into_cells(grid, x, 2.2, pz);
-  build_neighbour_list(list, grid, x, r, motion, 1.2, pz, NeighbourList{}, serial);
+  build_neighbour_list(list, grid, x, r, motion, 1.2, pz, NeighbourList{}, serial, scratch);
   ASSERT_EQ(list.nbr.size(), 20u);
   EXPECT_EQ(list.reach, 2);
+}
+
+// A rebuild's list takes each carried history from either of the pair's two rows of the
+// carried list (a particle taken in without a rebuild lists older partners in its own
+// row) and puts it in the new list's row of the lower index; entries without a carried
+// history start at zero, and a carried pair the new list does not hold is dropped.
+TEST(EngineMechanics, NeighbourListTakesCarriedHistoriesFromEitherRow) {
+  const PeriodicChain chain = periodic_chain(10);
+  CellGrid grid;
+  sort_into_cells(grid, chain.x, 1.1, chain.pz);
+  NeighbourList carried;  // rows 0..9: (2, 3) in row 3 (reverse), (5, 6) in row 5, (0, 5) not a neighbour
+  carried.start = {0, 1, 1, 1, 2, 2, 3, 3, 3, 3, 3};
+  carried.nbr = {5, 2, 6};
+  const ContactHistory far{{9, 9, 9}, {9, 9, 9}}, h23{{1, 2, 3}, {4, 5, 6}}, h56{{-1, 0, 0}, {0, 0, 7}};
+  carried.hist = {far, h23, h56};
+  for (int threads : {1, 2}) {
+    ThreadTeam team(threads);
+    ListBuildScratch scratch;
+    NeighbourList list;
+    build_neighbour_list(list, grid, chain.x, chain.r, chain.motion, 0.1, chain.pz, carried, team, scratch);
+    ASSERT_EQ(list.nbr.size(), 10u);
+    int carried_found = 0;
+    for (std::size_t i = 0; i < list.rows(); ++i)
+      for (std::uint32_t e = list.start[i]; e < list.start[i + 1]; ++e) {
+        const ContactHistory& h = list.hist[e];
+        if (i == 2 && list.nbr[e] == 3) {
+          EXPECT_EQ(h.shear.z, 3.0);
+          EXPECT_EQ(h.roll.x, 4.0);
+          ++carried_found;
+        } else if (i == 5 && list.nbr[e] == 6) {
+          EXPECT_EQ(h.shear.x, -1.0);
+          EXPECT_EQ(h.roll.z, 7.0);
+          ++carried_found;
+        } else {
+          EXPECT_TRUE(is_zero(h)) << "entry " << i << "-" << list.nbr[e];
+        }
+      }
+    EXPECT_EQ(carried_found, 2) << threads << " thread(s)";
+  }
 }
 
 // No particle or wall without a real material: ParticleInit and MaterialId have no default,

@@ -22,7 +22,8 @@ NeighbourList chain_list(int n) {
   for (std::size_t k = 0; k < order.size(); ++k) EXPECT_EQ(order[k], static_cast<std::int32_t>(k));
   NeighbourList list;
   ThreadTeam serial(1);
-  build_neighbour_list(list, grid, c.x, c.r, c.motion, 0.1, c.pz, NeighbourList{}, serial);
+  ListBuildScratch scratch;
+  build_neighbour_list(list, grid, c.x, c.r, c.motion, 0.1, c.pz, NeighbourList{}, serial, scratch);
   return list;
 }
 
