@@ -24,6 +24,48 @@ inline void half_kick(double half, double inv_m, double inv_inertia, Vec3 f, Vec
   w += (half * inv_inertia) * t;
 }
 
+// How far the particles may still move before the neighbour list can miss a contact.
+// Each particle has a half-skin h_i, set at each build (Simulation::rebuild): a pair is
+// listed when its gap is below h_i + h_j. Its gap then closes by at most the sum of the
+// two displacements d_i + d_j, so the list holds while every pair keeps
+// (h_i - d_i) + (h_j - d_j) >= 0: while the two smallest slacks h - d add up to no less
+// than zero. Walls are taken as candidates within 2 h_i of a particle, so each particle
+// also keeps 2 h_i - d_i >= 0. With one half-skin for all (skin/2) that is the rule "the
+// two largest displacements within a skin", of which "any particle within skin/2" is the
+// case where the two are equal (docs/dem_physics.md "Neighbour search").
+struct ListSlack {
+  double first = std::numeric_limits<double>::infinity();   // m, the smallest h - d
+  double second = std::numeric_limits<double>::infinity();  // m, the next
+  double wall = std::numeric_limits<double>::infinity();    // m, the smallest 2 h - d
+
+  // d2: the particle's squared displacement since the build (infinity if not a number).
+  void add(double d2, double half_skin) {
+    const double d = std::sqrt(d2);
+    const double s = half_skin - d;
+    if (s < first) {
+      second = first;
+      first = s;
+    } else if (s < second) {
+      second = s;
+    }
+    wall = std::min(wall, 2.0 * half_skin - d);
+  }
+  void add(const ListSlack& o) {
+    for (const double s : {o.first, o.second}) {
+      if (s < first) {
+        second = first;
+        first = s;
+      } else if (s < second) {
+        second = s;
+      }
+    }
+    wall = std::min(wall, o.wall);
+  }
+  // True once some pair or wall contact may be missing from the lists (also for a
+  // non-finite displacement).
+  bool exhausted() const { return !(first + second >= 0.0 && wall >= 0.0); }
+};
+
 struct FirstHalfStep {
   double dt = 0.0, half = 0.0;  // s
   DrumMotion drum;

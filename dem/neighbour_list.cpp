@@ -126,7 +126,8 @@ struct NearRuns {
 namespace {
 
 // The histories of `carried` (same numbering; a pair in either of its two rows there) into
-// the entries of `out` that list the same pairs, each in the row of its lower index. Worked
+// the entries of `out` that list the same pairs (in the row of the lower index, or of a
+// far-reaching particle's own, build_neighbour_list). Worked
 // from the carried contacts (a few per particle), each looked up in the one row of `out`
 // that can hold it, not from every entry of `out` searched for in two carried rows: the
 // result is the same, a contact listed once in each. Parts write disjoint entries.
@@ -138,14 +139,20 @@ void carry_histories(NeighbourList& out, const NeighbourList& carried, ThreadTea
     for (long a = range_begin(rows, parts, p); a < range_begin(rows, parts, p + 1); ++a)
       for (std::uint32_t e = carried.start[a]; e < carried.start[a + 1]; ++e) {
         const std::int32_t b = carried.nbr[e];
-        const std::int32_t row = std::min(static_cast<std::int32_t>(a), b);
-        const std::int32_t partner = std::max(static_cast<std::int32_t>(a), b);
-        if (static_cast<std::size_t>(row) >= out.rows()) continue;
-        for (std::uint32_t k = out.start[row]; k < out.start[row + 1]; ++k)
-          if (out.nbr[k] == partner) {
-            out.hist[k] = carried.hist[e];
-            break;
-          }
+        // The row of the lower index, else (a pair of a far-reaching particle, listed in
+        // its own row) the other.
+        const std::int32_t lo = std::min(static_cast<std::int32_t>(a), b);
+        const std::int32_t hi = std::max(static_cast<std::int32_t>(a), b);
+        if (static_cast<std::size_t>(hi) >= out.rows()) continue;
+        auto put = [&](std::int32_t row, std::int32_t partner) {
+          for (std::uint32_t k = out.start[row]; k < out.start[row + 1]; ++k)
+            if (out.nbr[k] == partner) {
+              out.hist[k] = carried.hist[e];
+              return true;
+            }
+          return false;
+        };
+        if (!put(lo, hi)) put(hi, lo);
       }
   });
 }
@@ -154,23 +161,67 @@ void carry_histories(NeighbourList& out, const NeighbourList& carried, ThreadTea
 
 void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
-                          const PeriodicZ& pz, const NeighbourList& carried, ThreadTeam& team,
-                          ListBuildScratch& scratch) {
+                          const std::vector<double>& half_skin, const PeriodicZ& pz, const NeighbourList& carried,
+                          ThreadTeam& team, ListBuildScratch& scratch) {
   const long n = static_cast<long>(x.size());
   std::vector<std::uint32_t> count(static_cast<std::size_t>(n) + 1, 0);
-  // Row i lists j > i: a run's particles of lower index are skipped without being read.
+  // Far-reaching particles: a half-skin above skin/2.
+  const double base = 0.5 * skin;
+  const bool any_far = std::any_of(half_skin.begin(), half_skin.end(), [&](double h) { return h > base; });
+  const auto far = [&](long j) { return any_far && half_skin[static_cast<std::size_t>(j)] > base; };
+  double r_most = 0.0, h_most = base;
+  if (any_far) {
+    for (const double ri : r) r_most = std::max(r_most, ri);
+    for (const double h : half_skin) h_most = std::max(h_most, h);
+  }
+  // Row i lists j > i: a run's particles of lower index are skipped without being read;
+  // far-reaching ones list their own pairs.
   auto scan = [&](long i, const NearRuns& near, auto&& emit) {
     const Vec3 xi = x[i];
     const double ri = r[i];
     const bool i_free = motion[i] == Motion::free;
     for (int k = 0; k < near.count; ++k)
       for (std::int32_t j = std::max(near.b[k], static_cast<std::int32_t>(i + 1)); j < near.e[k]; ++j) {
-        if (!i_free && motion[j] != Motion::free) continue;
+        if ((!i_free && motion[j] != Motion::free) || far(j)) continue;
         Vec3 d = xi - x[j];
         d.z = pz.image(d.z);
         const double cut = ri + r[j] + skin;
         if (norm2(d) < cut * cut) emit(j);
       }
+  };
+  // Row i of a far-reaching particle (free) in cell c: every partner j within
+  // r_i + r_j + h_i + h_j, of lower index too, but the far-reaching ones of lower index
+  // (their rows list the pair), from as many cells around as that reach needs.
+  auto scan_far = [&](long i, long c, auto&& emit) {
+    const Vec3 xi = x[i];
+    const double ri = r[i], hi = half_skin[static_cast<std::size_t>(i)];
+    const double reach = ri + r_most + hi + h_most;
+    const long ix = c % g.nx, iy = (c / g.nx) % g.ny, iz = c / (static_cast<long>(g.nx) * g.ny);
+    const long mx = static_cast<long>(std::ceil(reach * g.inv_cx)), my = static_cast<long>(std::ceil(reach * g.inv_cy)),
+               mz = static_cast<long>(std::ceil(reach * g.inv_cz));
+    const bool all_z = g.periodic && 2 * mz + 1 >= g.nz;  // each z layer once
+    const long z0 = all_z ? 0 : iz - mz, z1 = all_z ? g.nz - 1 : iz + mz;
+    const long x0 = std::max(ix - mx, 0L), x1 = std::min(ix + mx, static_cast<long>(g.nx) - 1);
+    for (long zz = z0; zz <= z1; ++zz) {
+      long z = zz;
+      if (g.periodic) {
+        z = ((z % g.nz) + g.nz) % g.nz;
+      } else if (z < 0 || z >= g.nz) {
+        continue;
+      }
+      for (long y = std::max(iy - my, 0L); y <= std::min(iy + my, static_cast<long>(g.ny) - 1); ++y) {
+        const long row = g.nx * (y + g.ny * z);
+        const std::int32_t b = g.cell_start[static_cast<std::size_t>(row + x0)];
+        const std::int32_t e = g.cell_start[static_cast<std::size_t>(row + x1 + 1)];
+        for (std::int32_t j = b; j < e; ++j) {
+          if (j == i || (j < i && far(j))) continue;
+          Vec3 d = xi - x[j];
+          d.z = pz.image(d.z);
+          const double cut = ri + r[j] + hi + half_skin[static_cast<std::size_t>(j)];
+          if (norm2(d) < cut * cut) emit(j);
+        }
+      }
+    }
   };
   // One search per particle: each part lists its rows' partners into a buffer of its own,
   // then the buffers are laid end to end (a count pass first would search twice).
@@ -195,10 +246,15 @@ void build_neighbour_list(NeighbourList& out, const CellGrid& g, const std::vect
         near = NearRuns(g, c);
       }
       const std::size_t before = buf.size();
-      scan(i, near, [&](std::int32_t j) {
+      const auto emit = [&](std::int32_t j) {
         buf.push_back(j);
         if (j - i <= n / 2) reach = std::max(reach, j - i);  // not round a periodic boundary
-      });
+      };
+      if (far(i)) {
+        scan_far(i, c, emit);
+      } else {
+        scan(i, near, emit);
+      }
       count[i + 1] = static_cast<std::uint32_t>(buf.size() - before);
     }
     part_reach[static_cast<std::size_t>(p)] = reach;

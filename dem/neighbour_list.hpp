@@ -64,11 +64,14 @@ struct ListBuildScratch {
 
 // Half list of particles already in cell order: row i holds j > i with
 // |x_i - x_j| < r_i + r_j + skin, unless neither is Motion::free (nothing to compute).
-// Histories are taken from `carried` (same numbering; a pair may sit in either of its two
-// rows there), others start at zero.
+// Far-reaching particles (half_skin[i] > skin/2; half_skin empty: none) list their own
+// pairs, partners of lower index too: j with |x_i - x_j| < r_i + r_j + half_skin[i] +
+// half_skin[j] (a pair of two of them in the row of the lower index), and no other row
+// names them. Histories are taken from `carried` (same numbering; a pair may sit in either
+// of its two rows there), others start at zero.
 void build_neighbour_list(NeighbourList& out, const CellGrid& grid, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<Motion>& motion, double skin,
-                          const PeriodicZ& pz, const NeighbourList& carried, ThreadTeam& team,
-                          ListBuildScratch& scratch);
+                          const std::vector<double>& half_skin, const PeriodicZ& pz, const NeighbourList& carried,
+                          ThreadTeam& team, ListBuildScratch& scratch);
 
 }  // namespace centrec::dem

@@ -24,7 +24,8 @@ std::size_t bytes_of(const std::vector<T>& a) {
   return a.capacity() * sizeof(T);
 }
 
-// Walls a particle may touch before the next rebuild (it moves at most skin/2 meanwhile).
+// Walls a particle may touch before the next rebuild (it moves at most the skin meanwhile,
+// ListSlack).
 bool wall_candidate(const Wall& w, Vec3 p, double r, double margin) {
   if (!(norm2(w.velocity) == 0.0)) return true;  // moving geometry: always check
   const Vec3 d = p - w.origin;
@@ -336,7 +337,12 @@ void Simulation::rebuild() {
   for (std::size_t k = 0; k < order.size(); ++k) new_of_old[static_cast<std::size_t>(order[k])] = static_cast<std::int32_t>(k);
   carry_contacts(dirty_ ? im.carried : im.list, order, new_of_old, im.carry_buffer);
   permute_particles(order);
-  build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.pz, im.carry_buffer, *im.team, im.build_scratch);
+  const std::size_t n = x_.size();
+  im.drum_frame = scene_symmetric_about_drum();
+  im.half_skin.resize(n);
+  for (std::size_t i = 0; i < n; ++i) im.half_skin[i] = half_skin_of(i);
+  build_neighbour_list(im.list, im.grid, x_, r_, motion_, im.skin, im.half_skin, im.pz, im.carry_buffer, *im.team,
+                       im.build_scratch);
   im.touch.resize(im.list.nbr.size());
   for (std::size_t e = 0; e < im.touch.size(); ++e) im.touch[e] = !is_zero(im.list.hist[e]);
   im.routing = PartnerRouting{};  // planned by the next force pass, for its thread count
@@ -347,10 +353,8 @@ void Simulation::rebuild() {
   im.carried.hist.clear();
   im.carried.start.clear();
 
-  const std::size_t n = x_.size();
   im.x_build = x_;
   im.angle_since_build = 0.0;
-  im.drum_frame = scene_symmetric_about_drum();
   im.wall_mask.assign(n, 0u);
   for (std::size_t i = 0; i < n; ++i) im.wall_mask[i] = candidate_walls(i);
   ++im.rebuilds;
@@ -362,8 +366,19 @@ std::uint32_t Simulation::candidate_walls(std::size_t i) const {
   if (motion_[i] != Motion::free) return 0u;
   std::uint32_t mask = 0;
   for (std::size_t w = 0; w < walls_.size(); ++w)
-    if (wall_candidate(walls_[w], x_[i], r_[i], impl_->skin)) mask |= 1u << w;
+    if (wall_candidate(walls_[w], x_[i], r_[i], 2.0 * impl_->half_skin[i])) mask |= 1u << w;
   return mask;
+}
+
+double Simulation::half_skin_of(std::size_t i) const {
+  const Impl& im = *impl_;
+  const double base = 0.5 * im.skin;
+  if (motion_[i] != Motion::free) return base;
+  Vec3 v = v_[i];
+  if (im.drum_frame) v -= cross(cfg_.drum.omega * cfg_.drum.axis, x_[i] - cfg_.drum.origin);
+  const double flight = kListHorizonSteps * dt_ * norm(v);
+  const double most = im.skin / cfg_.skin_fraction;  // the largest diameter
+  return flight > base ? std::min(flight, std::max(most, base)) : base;
 }
 
 bool Simulation::scene_symmetric_about_drum() const {
@@ -417,19 +432,22 @@ FirstHalfStep Simulation::begin_first_half() {
   return h;
 }
 
-double Simulation::integrate_first_half() {
+ListSlack Simulation::integrate_first_half() {
   const long n = static_cast<long>(x_.size());
   const FirstHalfStep h = begin_first_half();
   const Vec3* xb = impl_->x_build.data();
+  const double* hs = impl_->half_skin.data();
   const int parts = n >= kMinParallelParticles ? threads_ : 1;
-  std::vector<double> part_d2(static_cast<std::size_t>(parts), 0.0);
+  std::vector<ListSlack> part_d2(static_cast<std::size_t>(parts));
   impl_->team->run(parts, [&](int p) {
-    double d2 = 0.0;
+    ListSlack d2;
     for (long i = range_begin(n, parts, p); i < range_begin(n, parts, p + 1); ++i)
-      d2 = std::max(d2, h.advance(motion_[i], inv_m_[i], inv_inertia_[i], f_[i], t_[i], xb[i], x_[i], v_[i], w_[i]));
+      d2.add(h.advance(motion_[i], inv_m_[i], inv_inertia_[i], f_[i], t_[i], xb[i], x_[i], v_[i], w_[i]), hs[i]);
     part_d2[static_cast<std::size_t>(p)] = d2;
   });
-  return *std::max_element(part_d2.begin(), part_d2.end());
+  ListSlack moved;
+  for (const ListSlack& d2 : part_d2) moved.add(d2);
+  return moved;
 }
 
 void Simulation::step(std::int64_t nsteps) {
@@ -440,23 +458,23 @@ void Simulation::step(std::int64_t nsteps) {
   // the usual end-of-step state. dirty_ changes only between calls.
   using clock = std::chrono::steady_clock;
   const auto seconds_since = [](clock::time_point t0) { return std::chrono::duration<double>(clock::now() - t0).count(); };
-  double max_d2 = 0.0;
+  ListSlack moved;
   bool started = false;  // this step's first half already done by the previous force pass
   for (std::int64_t s = 0; s < nsteps; ++s) {
     if (dirty_) rebuild();
     if (impl_->list.rows() < x_.size()) take_in_new_particles();
     if (!started) {
       const auto t0 = clock::now();
-      max_d2 = integrate_first_half();
+      moved = integrate_first_half();
       times_.first_half += seconds_since(t0);
     }
     for (Wall& w : walls_) w.origin += dt_ * w.velocity;
     ++step_;
     time_ += dt_;
-    if (max_d2 > 0.25 * impl_->skin * impl_->skin) rebuild();  // moved more than skin/2
+    if (moved.exhausted()) rebuild();
     started = s + 1 < nsteps;
     const auto t0 = clock::now();
-    max_d2 = compute_forces(true, started ? AfterForces::second_and_next_first_half : AfterForces::second_half);
+    moved = compute_forces(true, started ? AfterForces::second_and_next_first_half : AfterForces::second_half);
     times_.force_pass += seconds_since(t0);
   }
 }
@@ -477,7 +495,7 @@ std::size_t Simulation::memory_bytes() const {
   const Impl& im = *impl_;
   std::size_t b = 0;
   for_each_particle_array([&](auto array, auto, const char*, const char*, bool) { b += bytes_of(this->*array); });
-  b += im.list.bytes() + im.carried.bytes() + bytes_of(im.x_build) + bytes_of(im.wall_mask) +
+  b += im.list.bytes() + im.carried.bytes() + im.carry_buffer.bytes() + bytes_of(im.x_build) + bytes_of(im.half_skin) + bytes_of(im.wall_mask) +
        bytes_of(im.touch) + bytes_of(im.share) + bytes_of(im.routing.slot) + bytes_of(im.routing.park_start) +
        bytes_of(im.acc_f) + bytes_of(im.acc_t) +
        bytes_of(im.grid.cell_start);

@@ -36,6 +36,7 @@
 namespace centrec::dem {
 
 struct FirstHalfStep;  // dem/first_half_step.hpp
+struct ListSlack;     // dem/first_half_step.hpp
 
 // Rolling model of particle-wall contacts (docs/dem_physics.md).
 enum class WallRolling : std::uint8_t {
@@ -208,10 +209,10 @@ class Simulation {
   // second half kick (last step of a step() call), or that kick and then the next step's
   // first half (kick, drift), saving two sweeps.
   enum class AfterForces : std::uint8_t { nothing, second_half, second_and_next_first_half };
-  // Returns the largest squared displacement since the last build after the next step's
-  // first half (AfterForces::second_and_next_first_half), else 0.
-  double compute_forces(bool update_history, AfterForces after);
-  double integrate_first_half();  // returns the largest squared displacement since the last build
+  // Returns the two largest squared displacements since the last build after the next
+  // step's first half (AfterForces::second_and_next_first_half), else zeros.
+  ListSlack compute_forces(bool update_history, AfterForces after);
+  ListSlack integrate_first_half();  // returns the two largest squared displacements since the last build
   FirstHalfStep begin_first_half();  // the constants of this step's first half
   bool scene_symmetric_about_drum() const;
   void invalidate_list();  // particles or walls changed: carry contacts, rebuild before the next step
@@ -220,6 +221,7 @@ class Simulation {
   void take_in_new_particles();
   void remove_from_lists(const std::vector<std::int32_t>& order, const std::vector<std::int32_t>& new_of_old);
   std::uint32_t candidate_walls(std::size_t i) const;  // walls particle i may touch before the next rebuild
+  double half_skin_of(std::size_t i) const;            // particle i's half-skin for a list built now (ListSlack)
   void permute_particles(const std::vector<std::int32_t>& order);
   void update_pair_constants();
   // Refuses material m if a pair it would meet (materials of particles present, walls) has

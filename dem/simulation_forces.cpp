@@ -89,6 +89,7 @@ struct ForcePass {
   std::size_t nw;
   ContactHistory* whist;  // particles x walls
   const std::uint32_t* wall_mask;
+  const double* H;  // half-skins (ListSlack), set at each rebuild
   // Pair constants (materials x materials) and the step's constants.
   const PairConstants* pc;
   std::size_t n_mat;
@@ -136,6 +137,7 @@ struct ForcePass {
       __builtin_prefetch(park_start + q + 1);
       __builtin_prefetch(MOT + q);
       __builtin_prefetch(wall_mask + q);
+      __builtin_prefetch(H + q);
       __builtin_prefetch(whist + static_cast<std::size_t>(q) * nw, 1);
       __builtin_prefetch(F_out + q, 1);
       __builtin_prefetch(T_out + q, 1);
@@ -161,21 +163,21 @@ struct ForcePass {
     });
   }
 
-  // Steps 1-3 for rows i0 .. i1-1 (one block). Returns the largest squared displacement.
-  CENTREC_INLINE double sweep_rows(long i0, long i1, BlockTally& tally) const {
+  // Steps 1-3 for rows i0 .. i1-1 (one block). Returns the rows' slack (ListSlack).
+  CENTREC_INLINE ListSlack sweep_rows(long i0, long i1, BlockTally& tally) const {
 #ifdef CENTREC_PAIR_BATCH
     if (batched) return sweep_rows_batched(i0, i1, tally);
 #endif
     return sweep_rows_scalar(i0, i1, tally);
   }
 
-  CENTREC_INLINE double sweep_rows_scalar(long i0, long i1, BlockTally& tally) const {
-    double d2 = 0.0;
+  CENTREC_INLINE ListSlack sweep_rows_scalar(long i0, long i1, BlockTally& tally) const {
+    ListSlack d2;
     for (long i = i0; i < i1; ++i) {
       fetch_ahead(i);
       Vec3 F{}, T{};
       pair_row(i, F, T, tally);
-      d2 = std::max(d2, row_total(i, F, T, tally));
+      d2.add(row_total(i, F, T, tally), H[i]);
     }
     return d2;
   }
@@ -188,7 +190,7 @@ struct ForcePass {
   // Every sum, history, share and tally entry is thus made in the scalar order, pair_row
   // then row_total row by row: the same bits. Pending rows read only particles above the
   // rows totalled meanwhile, which their totals do not move.
-  CENTREC_INLINE double sweep_rows_batched(long i0, long i1, BlockTally& tally) const {
+  CENTREC_INLINE ListSlack sweep_rows_batched(long i0, long i1, BlockTally& tally) const {
     pair_batch::PairRef batch[pair_batch::kLanes];
     struct Entry {
       long i;
@@ -197,16 +199,16 @@ struct ForcePass {
       bool i_first;
     } entry[pair_batch::kLanes];
     int count = 0;
-    double d2 = 0.0;
+    ListSlack d2;
     long next_total = i0, open = -1;  // the first row not totalled; the row whose sums F, T are open
     Vec3 F{}, T{};
     const auto total_until = [&](long end) {  // rows next_total .. end-1: all their contacts applied
       for (; next_total < end; ++next_total) {
         if (next_total != open) {
-          d2 = std::max(d2, row_total(next_total, Vec3{}, Vec3{}, tally));
+          d2.add(row_total(next_total, Vec3{}, Vec3{}, tally), H[next_total]);
           continue;
         }
-        d2 = std::max(d2, row_total(next_total, F, T, tally));
+        d2.add(row_total(next_total, F, T, tally), H[next_total]);
         F = T = Vec3{};
         open = -1;
       }
@@ -404,7 +406,7 @@ void record_imbalance(const Parts& parts, double& idle) {
 
 }  // namespace
 
-double Simulation::compute_forces(bool update_history, AfterForces after) {
+ListSlack Simulation::compute_forces(bool update_history, AfterForces after) {
   Impl& im = *impl_;
   const long n = static_cast<long>(x_.size());
   const long nblocks = (n + kBlock - 1) / kBlock;
@@ -423,7 +425,7 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
                  im.list.start.data(), im.list.nbr.data(), im.list.hist.data(), im.touch.data(),
                  im.routing.slot.data(), im.routing.park_start.data(), im.share.data(), im.acc_f.data(),
                  im.acc_t.data(),
-                 walls_.data(), nw, wall_hist_.data(), im.wall_mask.data(),
+                 walls_.data(), nw, wall_hist_.data(), im.wall_mask.data(), im.half_skin.data(),
                  pc_.data(), n_mat_, im.pz, cfg_.gravity, dt_, blowup_fraction_,
                  cfg_.wall_rolling == WallRolling::relative, update_history, cfg_.pair_batch,
                  n, im.list.reach + kPrefetchMargin, ParticleFinish{}};
@@ -445,17 +447,18 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   // (Each part's largest displacement in its own slot, padded to a cache line.)
   // (Each part's largest displacement and busy time in its own slot, padded to a cache line.)
   struct alignas(64) PartMax {
-    double d2 = 0.0, busy = 0.0;
+    ListSlack d2;
+    double busy = 0.0;
   };
   std::vector<PartMax> part_max(static_cast<std::size_t>(parts));
   using clock = std::chrono::steady_clock;
   im.team->run(static_cast<int>(parts), [&](int part) {
     const auto t0 = clock::now();
-    double d2 = 0.0;
+    ListSlack d2;
     for (long b = im.routing.range_start[part]; b < im.routing.range_start[part + 1]; ++b) {
       BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
       tally.reset(nw);
-      d2 = std::max(d2, pass.sweep_rows(b * kBlock, std::min(n, (b + 1) * kBlock), tally));
+      d2.add(pass.sweep_rows(b * kBlock, std::min(n, (b + 1) * kBlock), tally));
     }
     part_max[static_cast<std::size_t>(part)].d2 = d2;
     part_max[static_cast<std::size_t>(part)].busy = std::chrono::duration<double>(clock::now() - t0).count();
@@ -465,20 +468,20 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
   if (im.routing.parked() > 0) {
     im.team->run(static_cast<int>(parts), [&](int part) {
       const auto t0 = clock::now();
-      double d2 = 0.0;
+      ListSlack d2;
       for (long b = im.routing.parked_range_start[part]; b < im.routing.parked_range_start[part + 1]; ++b) {
         BlockTally& tally = im.tallies[static_cast<std::size_t>(b)];
         const long j_end = std::min(n, (b + 1) * kBlock);
         for (long j = b * kBlock; j < j_end; ++j)
-          if (pass.park_start[j] != pass.park_start[j + 1]) d2 = std::max(d2, pass.parked_total(j, tally));
+          if (pass.park_start[j] != pass.park_start[j + 1]) d2.add(pass.parked_total(j, tally), pass.H[j]);
       }
-      part_max[static_cast<std::size_t>(part)].d2 = std::max(part_max[static_cast<std::size_t>(part)].d2, d2);
+      part_max[static_cast<std::size_t>(part)].d2.add(d2);
       part_max[static_cast<std::size_t>(part)].busy = std::chrono::duration<double>(clock::now() - t0).count();
     });
     record_imbalance(part_max, times_.parked_pass_idle);
   }
-  double max_d2 = 0.0;
-  for (const PartMax& m : part_max) max_d2 = std::max(max_d2, m.d2);
+  ListSlack moved;
+  for (const PartMax& m : part_max) moved.add(m.d2);
   // Step 5: fixed-order reduction over blocks.
   for (auto& f : wall_force_) f = {};
   im.pair_contacts = im.wall_contacts = 0;
@@ -491,7 +494,7 @@ double Simulation::compute_forces(bool update_history, AfterForces after) {
     im.pair_contacts += tally.pair_contacts;
     im.wall_contacts += tally.wall_contacts;
   }
-  return max_d2;
+  return moved;
 }
 
 }  // namespace centrec::dem

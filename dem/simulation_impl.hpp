@@ -33,6 +33,14 @@ void permute_rows(std::vector<T>& a, const std::vector<std::int32_t>& order, std
   a.swap(spare);
 }
 
+// Speed: a free particle's half-skin (ListSlack) is at least skin/2 and at most a
+// diameter, and reaches as far as the particle flies at its speed at the build in this many
+// steps. A drum's film moves slowly in the drum's frame, while a few particles (fed ones
+// falling through the drum's hollow, those thrown off the film's top) cross it at 1-1.4
+// m/s; with one skin for all they forced a rebuild every ~9 steps (docs/benchmarks.md).
+// Those few now get lists that reach further, found in a wider block of cells.
+inline constexpr double kListHorizonSteps = 30.0;
+
 struct BlockTally {
   std::vector<Vec3> wall_force;  // one per wall
   std::size_t pair_contacts = 0, wall_contacts = 0;
@@ -74,6 +82,7 @@ struct Simulation::Impl {
   PeriodicZ pz;
   double skin = 0.0;
   std::vector<Vec3> x_build;                // positions at the last rebuild
+  std::vector<double> half_skin;            // per particle, set at the last rebuild (ListSlack)
   // Displacements are measured in the drum's rotating frame when the whole scene is
   // symmetric about the drum axis (pair distances and wall gaps do not change under the
   // rigid rotation), so a co-rotating film does not trigger rebuilds at omega R / skin.

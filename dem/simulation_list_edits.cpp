@@ -9,15 +9,17 @@
 // ones of higher index. A particle named by a row after its own has its shares parked
 // (partner_routing.hpp): it is totalled and integrated in the parked pass, after every row,
 // so the sums keep a fixed order and no row reads a particle already moved. Reach: a pair
-// must be listed if it can touch before the next rebuild, which comes before any particle
-// has moved skin/2 from where it was at the last build; an old particle may already be
-// skin/2 from there and move skin/2 back past it, the new one skin/2: r_i + r_j + 1.5 skin.
+// must be listed if it can touch before the next rebuild. The new particle gets its
+// half-skin h_p as at a build; the next rebuild comes before the pair's displacements (the
+// new one's from where it was inserted, the old one's from where it was at the last build)
+// add up to more than h_p + h_j (ListSlack), and the old one may already be up to 2 h_j
+// from there and come back past it: r_p + r_j + h_p + 3 h_j (2 skin for two of skin/2).
 //
 // Removal: the arrays are compacted in order, the list's rows and entries with them
 // (entries naming a removed particle dropped). Compaction keeps every row's partners on the
 // same side of it, so the list stays a valid half list.
 //
-// The next rebuild (a particle moved skin/2, or rebuild_lists) makes the list from scratch;
+// The next rebuild (two particles moved a skin between them, or rebuild_lists) makes the list from scratch;
 // histories carry over as at any rebuild. Results differ from a rebuild at every insertion
 // only by the order of the sums, and are the same for any thread count.
 #include <algorithm>
@@ -42,7 +44,12 @@ void Simulation::take_in_new_particles() {
   Impl& im = *impl_;
   NeighbourList& list = im.list;
   const std::size_t n0 = list.rows(), n = x_.size();
-  const double reach_skin = 1.5 * im.skin;
+  // Half-skins of the new particles (those of the old ones were set at the build).
+  im.half_skin.resize(n);
+  for (std::size_t p = n0; p < n; ++p) im.half_skin[p] = half_skin_of(p);
+  double h_most = 0.0, h_new = 0.0;
+  for (std::size_t i = 0; i < n; ++i) h_most = std::max(h_most, im.half_skin[i]);
+  for (std::size_t p = n0; p < n; ++p) h_new = std::max(h_new, im.half_skin[p]);
 
   // Candidates: every particle inside the new ones' bounding box widened by the reach.
   double r_new = 0.0, r_all = 0.0;
@@ -53,7 +60,7 @@ void Simulation::take_in_new_particles() {
     lo = {std::min(lo.x, x_[p].x), std::min(lo.y, x_[p].y), std::min(lo.z, x_[p].z)};
     hi = {std::max(hi.x, x_[p].x), std::max(hi.y, x_[p].y), std::max(hi.z, x_[p].z)};
   }
-  const double pad = r_new + r_all + reach_skin;
+  const double pad = r_new + r_all + h_new + 3.0 * h_most;
   const bool whole_period_z = im.pz.on && hi.z - lo.z + 2.0 * pad >= im.pz.length();
   std::vector<std::int32_t> near;
   for (std::size_t j = 0; j < n; ++j) {
@@ -77,7 +84,7 @@ void Simulation::take_in_new_particles() {
       if (!p_free && motion_[uj] != Motion::free) continue;
       Vec3 d = x_[p] - x_[uj];
       d.z = im.pz.image(d.z);
-      const double cut = r_[p] + r_[uj] + reach_skin;
+      const double cut = r_[p] + r_[uj] + im.half_skin[p] + 3.0 * im.half_skin[uj];
       if (norm2(d) >= cut * cut) continue;
       list.nbr.push_back(j);
       list.hist.push_back(ContactHistory{});
@@ -134,6 +141,7 @@ void Simulation::remove_from_lists(const std::vector<std::int32_t>& order, const
   permute_particles(order);
   permute_rows(im.x_build, order);
   permute_rows(im.wall_mask, order);
+  permute_rows(im.half_skin, order);
   im.acc_f.assign(order.size(), Vec3{});
   im.acc_t.assign(order.size(), Vec3{});
   im.routing = PartnerRouting{};

@@ -212,7 +212,7 @@ TEST(EngineMechanics, NeighbourListReachSkipsPeriodicWrapEntries) {
   NeighbourList list;
   ThreadTeam serial(1);
   ListBuildScratch scratch;
-  build_neighbour_list(list, grid, x, r, motion, 0.1, pz, NeighbourList{}, serial, scratch);
+  build_neighbour_list(list, grid, x, r, motion, 0.1, {}, pz, NeighbourList{}, serial, scratch);
   ASSERT_EQ(list.nbr.size(), 10u);  // 9 links along the chain and the one across the period
   bool wrap_entry = false;
   for (std::uint32_t e = list.start[0]; e < list.start[1]; ++e) wrap_entry |= list.nbr[e] == 9;
@@ -222,7 +222,7 @@ TEST(EngineMechanics, NeighbourListReachSkipsPeriodicWrapEntries) {
   // A skin of 1.2 takes in second neighbours: rows reach two ahead, and across the period
   // (0-8, 0-9, 1-9) eight or nine, which do not count.
   sort_into_cells(grid, x, 2.2, pz);
-  build_neighbour_list(list, grid, x, r, motion, 1.2, pz, NeighbourList{}, serial, scratch);
+  build_neighbour_list(list, grid, x, r, motion, 1.2, {}, pz, NeighbourList{}, serial, scratch);
   ASSERT_EQ(list.nbr.size(), 20u);
   EXPECT_EQ(list.reach, 2);
 }
@@ -244,7 +244,7 @@ TEST(EngineMechanics, NeighbourListTakesCarriedHistoriesFromEitherRow) {
     ThreadTeam team(threads);
     ListBuildScratch scratch;
     NeighbourList list;
-    build_neighbour_list(list, grid, chain.x, chain.r, chain.motion, 0.1, chain.pz, carried, team, scratch);
+    build_neighbour_list(list, grid, chain.x, chain.r, chain.motion, 0.1, {}, chain.pz, carried, team, scratch);
     ASSERT_EQ(list.nbr.size(), 10u);
     int carried_found = 0;
     for (std::size_t i = 0; i < list.rows(); ++i)

@@ -23,7 +23,7 @@ NeighbourList chain_list(int n) {
   NeighbourList list;
   ThreadTeam serial(1);
   ListBuildScratch scratch;
-  build_neighbour_list(list, grid, c.x, c.r, c.motion, 0.1, c.pz, NeighbourList{}, serial, scratch);
+  build_neighbour_list(list, grid, c.x, c.r, c.motion, 0.1, {}, c.pz, NeighbourList{}, serial, scratch);
   return list;
 }
 
