@@ -1,5 +1,6 @@
 #include "runs/thermal_budget.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -54,6 +55,18 @@ std::vector<BudgetInput> budget_inputs(const config::ThermalCase& c) {
                   else
                     x.model.surface.h_conv *= v;
                 }});
+  // The receiver's own losses (docs/cavity_model.md): the wind's part of the convection and
+  // the share of the aperture power spilled onto the front plate, from the case's values.
+  if (correlation)
+    in.push_back({"wind speed", "m/s", c.model.cavity.wind_speed, 0.0, std::max(5.0, c.model.cavity.wind_speed), "assumed",
+                  "calm to a moderate breeze at the aperture; forced part from Ma 1993 (no direction dependence) mixed "
+                  "with the natural part, n = 3.2",
+                  [](config::ThermalCase& x, double v) { x.model.cavity.wind_speed = v; }});
+  if (c.model.cavity.enabled)
+    in.push_back({"spillage", "of aperture power", c.model.cavity.spillage, 0.0, std::max(0.05, c.model.cavity.spillage),
+                  "assumed", "share of the concentrated power landing on the front plate instead of entering; a few "
+                  "per cent for a well-aimed field, not measured for CentRec",
+                  [](config::ThermalCase& x, double v) { x.model.cavity.spillage = v; }});
   if (c.model.surface.extinction_depth_d != 0.0)
     in.push_back({"Beer-Lambert depth", "x depth", 1.0, 1.0, 2.18, "published",
                   "from the volume-scattering depth of large opaque spheres (Brewster 2004, 0.55 d at phi 0.55) to "
