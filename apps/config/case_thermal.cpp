@@ -192,13 +192,12 @@ void read_conductivity(MapReader r, th::FilmModel& m) {
 // "Front plate"); r_aperture is the same aperture as radiation.aperture_diameter / 2.
 void read_front_plate(MapReader& rad, th::CavitySettings& cav) {
   MapReader p = rad.child("front_plate", "the annular front plate around the aperture at z = L (cavity model)");
-  const bool r_given = p.has("r_aperture");
+  // A resolved configuration writes both keys, the unused one at its default 0.
   const double r_aperture = p.number("r_aperture", 0.0, Range::closed(0.0, 50.0), "m (0 = aperture_diameter / 2)",
                                      "inner radius of the front plate: the aperture's radius (instead of aperture_diameter)");
-  if (r_given) {
-    if (rad.has("aperture_diameter"))
+  if (r_aperture > 0.0) {
+    if (cav.aperture_diameter > 0.0 && cav.aperture_diameter != 2.0 * r_aperture)
       p.fail("r_aperture", "give the aperture once: radiation.aperture_diameter or radiation.front_plate.r_aperture");
-    if (!(r_aperture > 0.0)) p.fail("r_aperture", "must be > 0");
     cav.aperture_diameter = 2.0 * r_aperture;
   }
   cav.plate_U = p.number("U", -1.0, Range::closed(-1.0, 1e5), "W/(m2 K) (-1 = thermal.wall.U_w)",

@@ -47,8 +47,8 @@ std::vector<BudgetInput> budget_inputs(const config::ThermalCase& c) {
   // The cavity's convection (docs/cavity_model.md, "Convection"): natural convection only.
   const bool correlation = c.model.cavity.enabled && c.model.cavity.convection_correlation;
   in.push_back({"convection h", correlation ? "x correlation" : "x h_conv", 1.0, 0.8, 3.6, "assumed",
-                "natural-convection correlation extrapolated to Gr ~ 2e8, no wind or rotation-driven flow: likely a "
-                "lower bound; 3.6 x is h ~ 20 W/(m2 K) for the D12 receiver",
+                "natural-convection correlation extrapolated to Gr ~ 2e8 (wind and rotation only as the case's own "
+                "parts): likely a lower bound; 3.6 x is h ~ 20 W/(m2 K) for the D12 receiver",
                 [correlation](config::ThermalCase& x, double v) {
                   if (correlation)
                     x.model.cavity.convection_scale = v;
