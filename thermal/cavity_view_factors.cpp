@@ -24,6 +24,11 @@ double ring_element_to_end_disc(double R, double h) {
   return 0.5 * ((H * H + 2.0) / std::sqrt(H * H + 4.0) - H);
 }
 
+double ring_element_to_coaxial_disc(double R, double r, double h) {
+  const double H = h / R, P = r / R, X = 1.0 + H * H + P * P;
+  return 0.5 * H * (X / std::sqrt(X * X - 4.0 * P * P) - 1.0);
+}
+
 CavityViewFactors cavity_view_factors(double R, const std::vector<double>& z, double ra) {
   if (!(R > 0)) throw std::invalid_argument("cavity view factors: the radius must be > 0");
   if (z.size() < 2 || z.front() != 0.0) throw std::invalid_argument("cavity view factors: ring boundaries must start at z = 0");

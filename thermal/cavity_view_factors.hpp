@@ -30,6 +30,15 @@ double disc_to_disc_view_factor(double r1, double r2, double h);
 // independent check of the ring factors.
 double ring_element_to_end_disc(double R, double h);
 
+// F from a ring element dA on the inside of a cylinder of radius R to a coaxial disc of
+// radius r <= R in a plane at axial distance h (Siegel & Howell, element on the interior
+// of a cylinder to a coaxial disc):
+// with H = h / R, P = r / R, X = 1 + H^2 + P^2: F = (H / 2) (X / sqrt(X^2 - 4 P^2) - 1).
+// At r = R it is ring_element_to_end_disc. Differences of two radii give the factor to a
+// coaxial annulus (the front plate r_aperture..R); used by the tests as an independent
+// check of the front plate's factors.
+double ring_element_to_coaxial_disc(double R, double r, double h);
+
 struct CavityViewFactors {
   int n_rings = 0;
   bool front_annulus = false;           // aperture smaller than the drum

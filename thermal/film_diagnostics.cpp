@@ -47,13 +47,14 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
   b.mass_flow = m_out * g.perimeter;
   // A resting film has no outlet stream: report the inlet temperature.
   b.T_out = m_out > 0 ? model_.heat.temperature(H_out / m_out) : model_.T_in;
-  b.aperture_power = b.incident;
+  // The case's aperture power: what entered plus what spilled onto the front plate.
+  b.aperture_power = cavity_ && model_.cavity.spillage > 0 ? b.incident / (1.0 - model_.cavity.spillage) : b.incident;
+  b.spillage_loss = b.aperture_power - b.incident;
   if (cavity_) {
     // Through the aperture: the solar band (linear in the flux factor) and the thermal band
     // from the emissive powers the irradiation was computed from; the walls' losses at
     // their temperatures. Independent of the film's cell residuals.
     const Cavity& c = *cavity_;
-    const double U = model_.wall.adiabatic ? 0.0 : model_.wall.U_w;
     b.reflected_loss = c.solar_out * in.flux_factor;
     std::vector<double> emitted(c.n);
     for (int k = 0; k < c.n; ++k) emitted[k] = c.eps[k] * c.E[k];
@@ -63,15 +64,21 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
     for (int k = c.rings; k < c.n; ++k) {
       const double Tw = c.T_wall[k - c.rings];
       b.walls_convected += c.h * (Tw - model_.surface.T_air) * c.area[k];
-      b.walls_insulation += U * (Tw - model_.wall.T_amb) * c.area[k];
+      b.walls_insulation += c.wall_U[k - c.rings] * (Tw - model_.wall.T_amb) * c.area[k];
     }
     b.h_cavity = c.h;
+    b.h_natural = c.convection.h_natural;
+    b.h_wind = c.convection.h_wind;
+    b.h_rotation = c.convection.h_rotation;
+    b.grashof = c.convection.Gr;
+    b.reynolds_wind = c.convection.Re_wind;
+    b.reynolds_rotation = c.convection.Re_rotation;
   } else {
     b.reflected_loss = (1.0 - model_.material.alpha) * b.incident;
     b.emitted_loss = b.emitted;
     b.h_cavity = model_.surface.h_conv;
   }
-  b.receiver_residual = b.aperture_power - b.reflected_loss - b.emitted_loss - b.convected - b.walls_convected - b.wall -
+  b.receiver_residual = b.aperture_power - b.spillage_loss - b.reflected_loss - b.emitted_loss - b.convected - b.walls_convected - b.wall -
                         b.walls_insulation - b.carried - b.inlet_conduction - b.storage;
   b.efficiency = b.aperture_power > 0 ? b.carried / b.aperture_power : 0.0;
   return b;

@@ -47,7 +47,26 @@ struct CavitySettings {
   double wall_emissivity = 0.8;      // their thermal emissivity
   bool convection_correlation = true;  // Siebers & Kraabel / Stine & McDonald; false: surface.h_conv
   double convection_scale = 1.0;       // multiplies the correlation's h (the error budget's perturbation)
+  // Mixed convection with the correlation (thermal/cavity_convection.hpp): wind (Ma 1993) and
+  // the drum's rotation (Seghir-Ouali et al. 2006) mixed with the natural part by
+  // (sum h^n)^(1/n). Both 0: natural convection alone, h exactly the natural correlation's.
+  double wind_speed = 0.0;             // m/s, at the aperture
+  double rotation_rad_s = 0.0;         // drum angular speed for the rotation-driven part
+  double mixing_exponent = 3.2;        // n of the mixing rule (Siebers & Kraabel)
+  // Spillage: the share of the concentrated power at the aperture plane (the case's flux,
+  // docs/cavity_model.md "Spillage") that lands on the front plate's outer face instead of
+  // entering; it is lost to the ambient outside the cavity. The film gets (1 - spillage) of
+  // the case's flux; the efficiency stays carried / the case's aperture power.
+  double spillage = 0.0;
   double tilt_rad = 0.7853981633974483;  // cavity axis below the horizontal (aperture facing down)
+  // Front plate: the annulus aperture..drum radius at z = L (docs/cavity_model.md, "Front
+  // plate"), a grey diffuse wall in the enclosure that loses plate_U (T - T_amb) through its
+  // insulation and convects to the cavity air like the other walls (0: adiabatic, a
+  // reradiating surface). A value < 0 takes the drum wall's U_w and the back plate's
+  // wall_absorptance / wall_emissivity.
+  double plate_U = -1.0;             // W/(m2 K)
+  double plate_absorptance = -1.0;   // solar
+  double plate_emissivity = -1.0;    // thermal
 };
 
 // Wall eta = 0: loss through the insulation U_w (T_wall - T_amb), or adiabatic.

@@ -39,8 +39,12 @@ FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const 
                                   "surface has no aperture");
     model_.flux.q = model_.flux.aperture_mean * aperture_area() / film_area();
   }
+  const double spill = model_.cavity.spillage;
+  if (spill != 0.0 && !(model_.cavity.enabled && spill > 0.0 && spill < 1.0))
+    throw std::invalid_argument("spillage must be in [0, 1) and needs the cavity model (it lands on the front plate)");
   q_column_.resize(grid_.nz);
-  for (int i = 0; i < grid_.nz; ++i) q_column_[i] = model_.flux.at(grid_.zc[i]);
+  // What enters: the case's flux less the spilled share (1 - 0 changes no arithmetic).
+  for (int i = 0; i < grid_.nz; ++i) q_column_[i] = model_.flux.at(grid_.zc[i]) * (1.0 - spill);
   props_.resize(size());
   const double ext = model_.surface.extinction_depth_d;
   if (ext < 0.0 && model_.surface.extinction_local) {
@@ -106,10 +110,20 @@ void FilmOperator::setup_cavity() {
   c->area.assign(vf.area.begin(), vf.area.begin() + n);
   std::vector<double> rho_solar(n), rho_thermal(n);
   c->eps.resize(n);
+  const double U_wall = model_.wall.adiabatic ? 0.0 : model_.wall.U_w;
   for (int k = 0; k < n; ++k) {
-    const bool ring = k < nr;
-    rho_solar[k] = 1.0 - (ring ? mat.alpha : cs.wall_absorptance);
-    c->eps[k] = ring ? mat.epsilon : cs.wall_emissivity;
+    const bool ring = k < nr, plate = k == vf.annulus();
+    double alpha = mat.alpha;
+    c->eps[k] = mat.epsilon;
+    if (!ring) {
+      alpha = plate && cs.plate_absorptance >= 0 ? cs.plate_absorptance : cs.wall_absorptance;
+      c->eps[k] = plate && cs.plate_emissivity >= 0 ? cs.plate_emissivity : cs.wall_emissivity;
+      c->wall_alpha.push_back(alpha);
+      c->wall_U.push_back(plate && cs.plate_U >= 0 ? cs.plate_U : U_wall);
+      if (!(alpha > 0 && alpha <= 1 && c->eps[k] > 0 && c->eps[k] <= 1))
+        throw std::invalid_argument("cavity model: front plate absorptance and emissivity must be in (0, 1]");
+    }
+    rho_solar[k] = 1.0 - alpha;
     rho_thermal[k] = 1.0 - c->eps[k];
   }
   c->thermal = std::make_unique<CavityEnclosure>(vf, rho_thermal);
@@ -143,7 +157,6 @@ void FilmOperator::update_cavity(const double* T, const Inputs& in) {
   const CavitySettings& cs = model_.cavity;
   const double sigma = kStefanBoltzmann, E_env = sigma * std::pow(s.T_env, 4);
   const double D = grid_.perimeter / kPi, d_ap = cs.aperture_diameter > 0 ? cs.aperture_diameter : D;
-  const double U = w.adiabatic ? 0.0 : w.U_w;
   for (int i = 0; i < nz; ++i) c.T_s[i] = T[i * nxi + nxi - 1];
   // Fixed point: the film surface temperatures follow the irradiation through the stiff
   // half-cell conduction (contraction ~ 4 eps sigma T^3 / (2 k / deta) << 1); the walls
@@ -168,9 +181,13 @@ void FilmOperator::update_cavity(const double* T, const Inputs& in) {
       area_T += c.area[k] * Tm;
       area += c.area[k];
     }
-    c.h = cs.convection_correlation
-              ? cs.convection_scale * cavity_convection_coefficient(area_T / area, s.T_air, D, d_ap, cs.tilt_rad)
-              : s.h_conv;
+    if (cs.convection_correlation) {
+      c.convection = cavity_mixed_convection(area_T / area, s.T_air, D, d_ap, cs.tilt_rad, cs.wind_speed,
+                                             cs.rotation_rad_s, cs.mixing_exponent);
+      c.h = cs.convection_scale * c.convection.h;
+    } else {
+      c.h = s.h_conv;
+    }
     for (int k = 0; k < n; ++k) {
       double h = c.m[k] * E_env;
       const double* Mk = &c.M[static_cast<std::size_t>(k) * n];
@@ -188,7 +205,7 @@ void FilmOperator::update_cavity(const double* T, const Inputs& in) {
       // a S + e H - e sigma x^4 - h (x - T_air) - U (x - T_amb) = 0: concave and decreasing in
       // x, so Newton from above the root (where e sigma x^4 equals all gains) converges
       // monotonically.
-      const double e = c.eps[k], S = cs.wall_absorptance * c.H_solar[k] * in.flux_factor;
+      const double e = c.eps[k], S = c.wall_alpha[k - nr] * c.H_solar[k] * in.flux_factor, U = c.wall_U[k - nr];
       const double gain = S + e * c.H[k] + c.h * s.T_air + U * w.T_amb;
       double x = std::pow(gain / (e * sigma), 0.25);
       for (int iter = 0; iter < 100; ++iter) {
@@ -494,14 +511,13 @@ int FilmOperator::low_rank_jacobian(double t, const double* y, std::vector<doubl
   const Cavity& c = *cavity_;
   const int nz = grid_.nz, nxi = grid_.nxi, nr = c.rings, ns = c.n;
   const double eps = model_.material.epsilon, sg = kStefanBoltzmann;
-  const double U_w = model_.wall.adiabatic ? 0.0 : model_.wall.U_w;
   // A = I - M_w B_w over all surfaces (only wall columns of M), then G = A^-1 M_rings.
   std::vector<double> A(static_cast<std::size_t>(ns) * ns, 0.0);
   for (int k = 0; k < ns; ++k) {
     A[static_cast<std::size_t>(k) * ns + k] = 1.0;
     for (int w = nr; w < ns; ++w) {
       const double Tw = c.T_wall[w - nr], ew = c.eps[w];
-      const double b = 4 * sg * Tw * Tw * Tw * ew / (4 * ew * sg * Tw * Tw * Tw + c.h + U_w);
+      const double b = 4 * sg * Tw * Tw * Tw * ew / (4 * ew * sg * Tw * Tw * Tw + c.h + c.wall_U[w - nr]);
       A[static_cast<std::size_t>(k) * ns + w] -= c.M[static_cast<std::size_t>(k) * ns + w] * b;
     }
   }

@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+#include "cavity_convection.hpp"
 #include "cavity_radiation.hpp"
 #include "film_field.hpp"
 #include "film_grid.hpp"
@@ -46,9 +47,14 @@ struct FilmBalance {
   double emitted_loss = 0.0;      // net thermal radiation leaving through the aperture
   double walls_convected = 0.0;   // back plate and front annulus to the air
   double walls_insulation = 0.0;  // back plate and front annulus through their insulation
+  double spillage_loss = 0.0;     // concentrated sunlight on the front plate's outer face, not entering
   double h_cavity = 0.0;          // convection coefficient used, W/(m2 K)
-  // aperture_power - reflected_loss - emitted_loss - convected - walls_convected - wall -
-  // walls_insulation - carried - inlet_conduction - storage
+  // Its parts with the cavity correlation (thermal/cavity_convection.hpp; before the error
+  // budget's scale), the correlation's Gr_L, the wind's and the rotation's Reynolds numbers.
+  double h_natural = 0.0, h_wind = 0.0, h_rotation = 0.0;
+  double grashof = 0.0, reynolds_wind = 0.0, reynolds_rotation = 0.0;
+  // aperture_power - spillage_loss - reflected_loss - emitted_loss - convected - walls_convected -
+  // wall - walls_insulation - carried - inlet_conduction - storage
   double receiver_residual = 0.0;
 };
 
@@ -146,6 +152,7 @@ class FilmOperator : public OdeSystem {
     std::unique_ptr<CavityEnclosure> thermal;  // reflectances 1 - eps
     double solar_out = 0.0;                  // sunlight leaving through the aperture at flux factor 1, W
     std::vector<double> eps;                 // thermal emissivity per surface
+    std::vector<double> wall_alpha, wall_U;  // per wall (back plate, front plate): solar absorptance, insulation W/(m2 K)
     std::vector<double> M, m;                // thermal irradiation H = M E + m E_env
     std::vector<double> H_solar;             // diffuse solar irradiation at flux factor 1, W/m2
     std::vector<double> primary;             // primary solar per surface at flux factor 1, W/m2
@@ -156,6 +163,7 @@ class FilmOperator : public OdeSystem {
     // State of the last update.
     std::vector<double> H, T_s, T_wall, E;   // irradiation per surface, column T_s, wall T, emissive power
     double h = 0.0;
+    CavityConvection convection;             // the correlation's parts (when it is used)
   };
   std::unique_ptr<Cavity> cavity_;
 };

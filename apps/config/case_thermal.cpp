@@ -188,6 +188,33 @@ void read_conductivity(MapReader r, th::FilmModel& m) {
   r.finish();
 }
 
+// The front plate closing the drum's open end around the aperture (docs/cavity_model.md,
+// "Front plate"); r_aperture is the same aperture as radiation.aperture_diameter / 2.
+void read_front_plate(MapReader& rad, th::CavitySettings& cav) {
+  MapReader p = rad.child("front_plate", "the annular front plate around the aperture at z = L (cavity model)");
+  // A resolved configuration writes both keys, the unused one at its default 0.
+  const double r_aperture = p.number("r_aperture", 0.0, Range::closed(0.0, 50.0), "m (0 = aperture_diameter / 2)",
+                                     "inner radius of the front plate: the aperture's radius (instead of aperture_diameter)");
+  if (r_aperture > 0.0) {
+    if (cav.aperture_diameter > 0.0 && cav.aperture_diameter != 2.0 * r_aperture)
+      p.fail("r_aperture", "give the aperture once: radiation.aperture_diameter or radiation.front_plate.r_aperture");
+    cav.aperture_diameter = 2.0 * r_aperture;
+  }
+  cav.plate_U = p.number("U", -1.0, Range::closed(-1.0, 1e5), "W/(m2 K) (-1 = thermal.wall.U_w)",
+                         "heat loss through the front plate's insulation to T_amb (0: adiabatic, reradiating)");
+  cav.plate_absorptance = p.number("absorptance", -1.0, Range::closed(-1.0, 1.0), "(-1 = wall_absorptance)",
+                                   "solar absorptance of the front plate's inner face");
+  cav.plate_emissivity = p.number("emissivity", -1.0, Range::closed(-1.0, 1.0), "(-1 = wall_emissivity)",
+                                  "thermal emissivity of the front plate's inner face");
+  if (p.has("absorptance") && cav.plate_absorptance == 0.0) p.fail("absorptance", "must be in (0, 1] (or -1: the wall's)");
+  if (p.has("emissivity") && cav.plate_emissivity == 0.0) p.fail("emissivity", "must be in (0, 1] (or -1: the wall's)");
+  if (p.has("absorptance") && cav.plate_absorptance < 0.0 && cav.plate_absorptance != -1.0)
+    p.fail("absorptance", "must be in (0, 1] (or -1: the wall's)");
+  if (p.has("emissivity") && cav.plate_emissivity < 0.0 && cav.plate_emissivity != -1.0)
+    p.fail("emissivity", "must be in (0, 1] (or -1: the wall's)");
+  p.finish();
+}
+
 void read_solver(MapReader r, ThermalCase& c) {
   th::IntegratorSettings& in = c.steady.integrator;
   // Ranges are what double precision and BDF can deliver (1e-30 is refused here).
@@ -270,6 +297,23 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                                  "correlation";
     cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg", "receiver tilt for the convection correlation (cavity model)") *
                    3.14159265358979323846 / 180.0;
+    read_front_plate(rad, cav);
+    cav.spillage = rad.number("spillage", 0.0, Range::closed(0.0, 0.5), "",
+                              "share of the case's aperture power that lands on the front plate's outer face "
+                              "instead of entering (lost outside the cavity; cavity model)");
+    // Mixed convection (docs/cavity_model.md, "Convection"): off unless given.
+    cav.wind_speed = rad.number("wind_speed", 0.0, Range::closed(0.0, 50.0), "m/s",
+                                "wind speed at the receiver for the forced part of the convection correlation (Ma "
+                                "1993, no direction dependence; cavity model, convection: correlation)");
+    cav.rotation_rad_s = rad.number("rotation_rpm", 0.0, Range::closed(0.0, 1e4), "rpm",
+                                    "drum speed for the rotation-driven part of the convection correlation "
+                                    "(Seghir-Ouali et al. 2006; 0: none; cavity model, convection: correlation)") *
+                         2.0 * 3.14159265358979323846 / 60.0;
+    cav.mixing_exponent = rad.number("mixing_exponent", 3.2, Range::closed(1.0, 10.0), "",
+                                     "n of the mixing rule h = (h_natural^n + h_wind^n + h_rotation^n)^(1/n)");
+    if (!cav.convection_correlation && (cav.wind_speed > 0.0 || cav.rotation_rad_s > 0.0))
+      rad.fail(cav.wind_speed > 0.0 ? "wind_speed" : "rotation_rpm",
+               "applies to the convection correlation (radiation.convection: correlation), not to surface.h_conv");
   }
   if (!cav.enabled && m.flux.aperture_mean > 0.0)
     t.fail("flux", "gives q_aperture, the flux through the cavity's aperture, but thermal.radiation.model is "

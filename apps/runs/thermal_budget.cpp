@@ -1,5 +1,6 @@
 #include "runs/thermal_budget.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -46,14 +47,26 @@ std::vector<BudgetInput> budget_inputs(const config::ThermalCase& c) {
   // The cavity's convection (docs/cavity_model.md, "Convection"): natural convection only.
   const bool correlation = c.model.cavity.enabled && c.model.cavity.convection_correlation;
   in.push_back({"convection h", correlation ? "x correlation" : "x h_conv", 1.0, 0.8, 3.6, "assumed",
-                "natural-convection correlation extrapolated to Gr ~ 2e8, no wind or rotation-driven flow: likely a "
-                "lower bound; 3.6 x is h ~ 20 W/(m2 K) for the D12 receiver",
+                "natural-convection correlation extrapolated to Gr ~ 2e8 (wind and rotation only as the case's own "
+                "parts): likely a lower bound; 3.6 x is h ~ 20 W/(m2 K) for the D12 receiver",
                 [correlation](config::ThermalCase& x, double v) {
                   if (correlation)
                     x.model.cavity.convection_scale = v;
                   else
                     x.model.surface.h_conv *= v;
                 }});
+  // The receiver's own losses (docs/cavity_model.md): the wind's part of the convection and
+  // the share of the aperture power spilled onto the front plate, from the case's values.
+  if (correlation)
+    in.push_back({"wind speed", "m/s", c.model.cavity.wind_speed, 0.0, std::max(5.0, c.model.cavity.wind_speed), "assumed",
+                  "calm to a moderate breeze at the aperture; forced part from Ma 1993 (no direction dependence) mixed "
+                  "with the natural part, n = 3.2",
+                  [](config::ThermalCase& x, double v) { x.model.cavity.wind_speed = v; }});
+  if (c.model.cavity.enabled)
+    in.push_back({"spillage", "of aperture power", c.model.cavity.spillage, 0.0, std::max(0.05, c.model.cavity.spillage),
+                  "assumed", "share of the concentrated power landing on the front plate instead of entering; a few "
+                  "per cent for a well-aimed field, not measured for CentRec",
+                  [](config::ThermalCase& x, double v) { x.model.cavity.spillage = v; }});
   if (c.model.surface.extinction_depth_d != 0.0)
     in.push_back({"Beer-Lambert depth", "x depth", 1.0, 1.0, 2.18, "published",
                   "from the volume-scattering depth of large opaque spheres (Brewster 2004, 0.55 d at phi 0.55) to "

@@ -61,6 +61,14 @@ nlohmann::json receiver_json(const config::ThermalCase& c, const thermal::FilmBa
     j["flux_aperture_mean_W_m2"] = mean_flux(P, op.aperture_area());
     j["cavity_walls_convective_loss_W"] = b.walls_convected;
     j["cavity_walls_insulation_loss_W"] = b.walls_insulation;
+    // The receiver's own losses when the case turns them on (docs/cavity_model.md).
+    const thermal::CavitySettings& cs = c.model.cavity;
+    if (cs.spillage > 0) j["spillage_loss_W"] = b.spillage_loss;
+    if (cs.convection_correlation && (cs.wind_speed > 0 || cs.rotation_rad_s > 0))
+      j["convection_parts"] = {{"h_natural_W_m2K", b.h_natural}, {"h_wind_W_m2K", b.h_wind},
+                               {"h_rotation_W_m2K", b.h_rotation}, {"grashof", b.grashof},
+                               {"reynolds_wind", b.reynolds_wind}, {"reynolds_rotation", b.reynolds_rotation},
+                               {"mixing_exponent", cs.mixing_exponent}};
   } else {
     j["loss_factor"] = c.model.surface.loss_factor;
   }
@@ -325,6 +333,18 @@ void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r) {
               c.model.cavity.enabled ? "aperture" : "open surface", b.convected + b.walls_convected,
               pct(b.convected + b.walls_convected), b.h_cavity, b.wall + b.walls_insulation,
               pct(b.wall + b.walls_insulation), P > 0 ? b.receiver_residual / P : 0.0);
+  const thermal::CavitySettings& cs = c.model.cavity;
+  if (!c.model.cavity.enabled) return;
+  if (cs.spillage > 0)
+    std::printf("  spillage: %.4g W (%.2f %%) on the front plate's outer face, not entering\n", b.spillage_loss,
+                pct(b.spillage_loss));
+  if (cs.convection_correlation && (cs.wind_speed > 0 || cs.rotation_rad_s > 0))
+    std::printf("  convection (docs/cavity_model.md): natural %.3g W/(m2 K) at Gr_L %.3g (extrapolated: fitted to large "
+                "central-receiver cavities), wind %.3g W/(m2 K) at %.3g m/s (Re_ap %.3g), "
+                "rotation %.3g W/(m2 K) at Re_r %.3g (correlated for 1.6e3-2.77e5%s); mixed n = %.2g: %.3g W/(m2 K)\n",
+                b.h_natural, b.grashof, b.h_wind, cs.wind_speed, b.reynolds_wind, b.h_rotation, b.reynolds_rotation,
+                b.reynolds_rotation > 2.77e5 || (b.reynolds_rotation > 0 && b.reynolds_rotation < 1.6e3) ? ", OUTSIDE" : "",
+                cs.mixing_exponent, b.h_cavity);
 }
 
 }  // namespace centrec::runs

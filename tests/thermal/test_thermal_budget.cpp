@@ -116,7 +116,7 @@ thermal:
   radiation: {model: cavity, tilt_deg: 45}
 )"));
   const std::vector<runs::BudgetInput> inputs = runs::budget_inputs(c);
-  EXPECT_EQ(inputs.size(), 8u);  // the particle's four, convection, Beer-Lambert depth, mixing, aperture power
+  EXPECT_EQ(inputs.size(), 10u);  // the particle's four, convection, wind, spillage, Beer-Lambert depth, mixing, aperture power
   const runs::BudgetOutputs nominal = runs::budget_outputs_at(c);
   for (const runs::BudgetInput& in : inputs) {
     config::ThermalCase x = c;
