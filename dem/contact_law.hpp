@@ -1,11 +1,12 @@
 #pragma once
 // The one contact law used for particle-particle and particle-wall contacts
-// (docs/dem_physics.md and docs/architecture.md): Hertz + Mindlin + EPSD2 as a pure inline function.
+// (docs/dem_physics.md and docs/architecture.md): Hertz + Mindlin + a rolling model
+// (dem/rolling_models.hpp) as a pure inline function.
 // The neighbour loop, threading and history storage live elsewhere (simulation.cpp).
 #include "dem/contact_history.hpp"
-#include "dem/epsd2_rolling.hpp"
 #include "dem/hertz_mindlin.hpp"
 #include "dem/material.hpp"
+#include "dem/rolling_models.hpp"
 #include "dem/vec3.hpp"
 
 namespace centrec::dem {
@@ -58,13 +59,15 @@ inline ContactResult evaluate_contact(const PairConstants& c, const ContactInput
   out.fn = hertz_normal_force(k, in.delta, vn);
   const TangentialResult t = mindlin_tangential(k, c.mu, out.fn, in.n, vt, old.shear, dt, out.history.shear);
   out.sliding = t.sliding;
-  out.history.roll = c.mu_r > 0.0 ? epsd2_rolling_torque(k.kt, in.r_eff, c.mu_r, out.fn, in.n, in.w_rel, old.roll, dt)
-                                  : Vec3{};
+  RollingOut<Vec3> roll{Vec3{}, Vec3{}};
+  if (c.mu_r > 0.0)
+    roll = rolling_torque(c.rolling, k.kt, k.kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n, in.w_rel, old.roll, dt);
+  out.history.roll = roll.history;
   out.force = out.fn * in.n + t.force;
   // Tangential force acts at the contact point: -arm_i n on i, +arm_j n on j.
   const Vec3 nxft = cross(in.n, t.force);
-  out.torque_i = -in.arm_i * nxft - out.history.roll;
-  out.torque_j = -in.arm_j * nxft + out.history.roll;
+  out.torque_i = -in.arm_i * nxft - roll.torque;
+  out.torque_j = -in.arm_j * nxft + roll.torque;
   return out;
 }
 

@@ -12,6 +12,7 @@ PairConstants make_pair_constants(const Material& a, const Material& b, const Pa
   c.beta = p.restitution >= 1.0 ? 0.0 : le / std::sqrt(le * le + M_PI * M_PI);
   c.mu = p.friction;
   c.mu_r = p.rolling_friction;
+  c.rolling = p.rolling_model;
   const double damp = -2.0 * std::sqrt(5.0 / 6.0) * c.beta;
   c.damp_n = damp * std::sqrt(2.0 * c.E_eff);
   c.damp_t = damp * std::sqrt(8.0 * c.G_eff);

@@ -2,6 +2,8 @@
 // Material and material-pair parameters of the contact law (docs/dem_physics.md).
 #include <cmath>
 
+#include "dem/rolling_models.hpp"
+
 namespace centrec::dem {
 
 // A material of one Simulation, as Simulation::add_material returned it. It has no
@@ -19,11 +21,33 @@ struct Material {
 };
 
 // Interaction parameters given per material pair (particle-particle, particle-wall).
+// Each field is named once in for_each_pair_field below, which the engine's checks, the
+// checkpoint, the case reader's comparison and the LIGGGHTS export walk.
 struct PairInteraction {
   double restitution = 0.46;
   double friction = 0.81;         // sliding, Coulomb
-  double rolling_friction = 0.26; // EPSD2 mu_r
+  double rolling_friction = 0.26; // mu_r of the rolling model
+  RollingModel rolling_model = RollingModel::epsd2;
 };
+
+// f(name, member pointer, lowest, highest, lowest_open): the numeric fields with their
+// ranges (restitution in (0, 1], the others >= 0), then g(name, member pointer) for the
+// rolling model.
+template <class F, class G>
+void for_each_pair_field(F&& f, G&& g) {
+  constexpr double inf = 1e300;
+  f("restitution", &PairInteraction::restitution, 0.0, 1.0, true);
+  f("friction", &PairInteraction::friction, 0.0, inf, false);
+  f("rolling_friction", &PairInteraction::rolling_friction, 0.0, inf, false);
+  g("rolling_model", &PairInteraction::rolling_model);
+}
+
+inline bool same(const PairInteraction& a, const PairInteraction& b) {
+  bool eq = true;
+  for_each_pair_field([&](const char*, auto m, double, double, bool) { eq = eq && a.*m == b.*m; },
+                      [&](const char*, auto m) { eq = eq && a.*m == b.*m; });
+  return eq;
+}
 
 // Precomputed once per material pair: effective moduli and the damping factor.
 struct PairConstants {
@@ -32,6 +56,7 @@ struct PairConstants {
   double beta = 0.0;    // ln(e)/sqrt(ln^2(e)+pi^2), < 0 (0 for e = 1)
   double mu = 0.0;
   double mu_r = 0.0;
+  RollingModel rolling = RollingModel::epsd2;
   // Dashpot prefactors: gamma_n = damp_n sqrt(sqrt(R* delta) m*) equals
   // -2 sqrt(5/6) beta sqrt(Sn m*) with Sn = 2 E* sqrt(R* delta); damp_t likewise with
   // St = 8 G* sqrt(R* delta). Saves two square roots per contact.

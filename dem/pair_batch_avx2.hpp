@@ -35,12 +35,15 @@ inline V4 operator*(d4 s, V4 a) { return {s * a.x, s * a.y, s * a.z}; }
 inline V4 operator*(double s, V4 a) { return {s * a.x, s * a.y, s * a.z}; }
 inline d4 dot(V4 a, V4 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline V4 cross(V4 a, V4 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-inline d4 sqrt4(d4 a) { return _mm256_sqrt_pd(a); }  // correctly rounded, as std::sqrt
-inline d4 fabs4(d4 a) { return _mm256_andnot_pd(_mm256_set1_pd(-0.0), a); }
-// a > b per lane: all ones where true, false for NaN as the scalar comparison.
-inline d4 greater(d4 a, d4 b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
-inline d4 select(d4 mask, d4 a, d4 b) { return _mm256_blendv_pd(b, a, mask); }
+// The lane operations of dem/lane_ops.hpp (sqrt_of, abs_of, greater, select, zero_like)
+// for d4, and for V4 here (found by argument-dependent lookup from the shared texts).
+using centrec::dem::abs_of;
+using centrec::dem::greater;
+using centrec::dem::select;
+using centrec::dem::sqrt_of;
+using centrec::dem::zero_like;
 inline V4 select(d4 mask, V4 a, V4 b) { return {select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z)}; }
+inline V4 zero_like(V4) { return {_mm256_setzero_pd(), _mm256_setzero_pd(), _mm256_setzero_pd()}; }
 
 inline d4 lanes(double a0, double a1, double a2, double a3) { return _mm256_set_pd(a3, a2, a1, a0); }
 inline V4 lanes(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& a3) {
@@ -55,6 +58,9 @@ struct ContactLanes {
 };
 struct ConstantLanes {
   d4 E_eff, G_eff, mu, mu_r, damp_n, damp_t;
+  RollingModel model;  // every lane's rolling model, unless models_differ
+  bool models_differ;
+  d4 is_cdt;  // where models_differ: all ones in the lanes of RollingModel::cdt
 };
 struct HistoryLanes {
   V4 shear, roll;
@@ -64,6 +70,26 @@ struct ResultLanes {  // ContactResult; sliding: all ones where the Coulomb cap 
   d4 fn, sliding;
   HistoryLanes history;
 };
+
+// The constants of four contacts' material pairs, lane k from pk.
+inline ConstantLanes constant_lanes(const PairConstants* p0, const PairConstants* p1, const PairConstants* p2,
+                                    const PairConstants* p3) {
+  if (p0 == p1 && p0 == p2 && p0 == p3) {  // one material pair (the common case)
+    const PairConstants& k = *p0;
+    return {_mm256_set1_pd(k.E_eff), _mm256_set1_pd(k.G_eff), _mm256_set1_pd(k.mu),
+            _mm256_set1_pd(k.mu_r),  _mm256_set1_pd(k.damp_n), _mm256_set1_pd(k.damp_t),
+            k.rolling,               false,                    _mm256_setzero_pd()};
+  }
+  const auto field = [&](double PairConstants::*f) { return lanes(p0->*f, p1->*f, p2->*f, p3->*f); };
+  const auto cdt = [](const PairConstants* k) { return k->rolling == RollingModel::cdt ? -1.0 : 0.0; };
+  const RollingModel m = p0->rolling;
+  const bool differ = p1->rolling != m || p2->rolling != m || p3->rolling != m;
+  return {field(&PairConstants::E_eff), field(&PairConstants::G_eff), field(&PairConstants::mu),
+          field(&PairConstants::mu_r),  field(&PairConstants::damp_n), field(&PairConstants::damp_t),
+          m,                            differ,
+          // -1.0 in the lanes of cdt: blendv (select) reads only the sign bit
+          lanes(cdt(p0), cdt(p1), cdt(p2), cdt(p3))};
+}
 
 // pair_contact_input per lane.
 inline ContactLanes pair_contact_inputs(V4 sd, d4 dist, d4 delta, d4 ra, d4 rc, d4 ma, d4 mc, V4 va, V4 vc, V4 wa,
@@ -75,11 +101,16 @@ inline ContactLanes pair_contact_inputs(V4 sd, d4 dist, d4 delta, d4 ra, d4 rc, 
 }
 
 // evaluate_contact per lane (hertz_mindlin_coefficients, hertz_normal_force,
-// mindlin_tangential, epsd2_rolling_torque inlined in their order).
-inline ResultLanes evaluate_contacts(const ConstantLanes& c, const ContactLanes& in, const HistoryLanes& old,
-                                     double dt) {
-  const d4 root = sqrt4(in.r_eff * in.delta);
-  const d4 q = sqrt4(root * in.m_eff);
+// mindlin_tangential inlined in their order; the rolling model's own text).
+// Speed: the law written once, made for each rolling model (and for lanes of both) so the
+// lanes of a batch of one model run that model's straight-line code.
+constexpr int kBothModels = -1;  // Model: a RollingModel's value, or lanes of both
+
+template <int Model>
+inline ResultLanes evaluate_contacts_as(const ConstantLanes& c, const ContactLanes& in, const HistoryLanes& old,
+                                        double dt) {
+  const d4 root = sqrt_of(in.r_eff * in.delta);
+  const d4 q = sqrt_of(root * in.m_eff);
   const d4 kn = (4.0 / 3.0) * c.E_eff * root, kt = 8.0 * c.G_eff * root;
   const d4 gamma_n = c.damp_n * q, gamma_t = c.damp_t * q;
   const d4 vn = dot(in.v_contact, in.n);
@@ -90,25 +121,47 @@ inline ResultLanes evaluate_contacts(const ConstantLanes& c, const ContactLanes&
   V4 shear = old.shear + dt * vt;
   shear = shear - dot(shear, in.n) * in.n;
   const V4 ft = (-kt) * shear;
-  const d4 ft_max = c.mu * fabs4(out.fn);
+  const d4 ft_max = c.mu * abs_of(out.fn);
   const d4 ft2 = dot(ft, ft);
   out.sliding = greater(ft2, ft_max * ft_max);
-  const V4 ft_slide = (ft_max / sqrt4(ft2)) * ft;
+  const V4 ft_slide = (ft_max / sqrt_of(ft2)) * ft;
   const V4 t_force = select(out.sliding, ft_slide, ft - gamma_t * vt);
   out.history.shear = select(out.sliding, (-1.0 / kt) * ft_slide, shear);
-  // Rolling: capped or not, and zero where mu_r <= 0.
-  const V4 w_t = in.w_rel - dot(in.w_rel, in.n) * in.n;
-  const V4 mr = old.roll + (kt * in.r_eff * in.r_eff * dt) * w_t;
-  const d4 mr_max = c.mu_r * in.r_eff * fabs4(out.fn);
-  const d4 mag2 = dot(mr, mr);
-  const V4 mr_capped = select(greater(mag2, mr_max * mr_max), (mr_max / sqrt4(mag2)) * mr, mr);
+  // Rolling (dem/rolling_models.hpp, the scalar law's text): each lane's model, and zero
+  // where mu_r <= 0. Lanes of one model (the common case) run that model only; lanes of
+  // two run both, each keeping its own.
+  RollingOut<V4> roll;
+  if constexpr (Model == kBothModels) {
+    const RollingOut<V4> a = rolling_torque(RollingModel::epsd2, kt, kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n,
+                                            in.w_rel, old.roll, dt);
+    const RollingOut<V4> b = rolling_torque(RollingModel::cdt, kt, kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n,
+                                            in.w_rel, old.roll, dt);
+    roll = {select(c.is_cdt, b.torque, a.torque), select(c.is_cdt, b.history, a.history)};
+  } else {
+    roll = rolling_torque(static_cast<RollingModel>(Model), kt, kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n, in.w_rel,
+                          old.roll, dt);
+  }
   const d4 zero = _mm256_setzero_pd();
-  out.history.roll = select(greater(c.mu_r, zero), mr_capped, V4{zero, zero, zero});
+  const d4 rolls = greater(c.mu_r, zero);
+  const V4 torque_r = select(rolls, roll.torque, zero_like(roll.torque));
+  out.history.roll = select(rolls, roll.history, zero_like(roll.history));
   out.force = out.fn * in.n + t_force;
   const V4 nxft = cross(in.n, t_force);
-  out.torque_i = (-in.arm_i) * nxft - out.history.roll;
-  out.torque_j = (-in.arm_j) * nxft + out.history.roll;
+  out.torque_i = (-in.arm_i) * nxft - torque_r;
+  out.torque_j = (-in.arm_j) * nxft + torque_r;
   return out;
+}
+
+inline ResultLanes evaluate_contacts(const ConstantLanes& c, const ContactLanes& in, const HistoryLanes& old,
+                                     double dt) {
+  if (c.models_differ) return evaluate_contacts_as<kBothModels>(c, in, old, dt);
+  switch (c.model) {
+    case RollingModel::cdt:
+      return evaluate_contacts_as<static_cast<int>(RollingModel::cdt)>(c, in, old, dt);
+    case RollingModel::epsd2:
+      break;
+  }
+  return evaluate_contacts_as<static_cast<int>(RollingModel::epsd2)>(c, in, old, dt);
 }
 
 // One particle pair in contact, as the pair row found it: a and c in canonical operand
@@ -153,19 +206,10 @@ inline void evaluate_pairs(const PairRef* p, int count, const ParticleArrays& s,
   const auto gather = [&](const auto* a, long PairRef::*idx) {
     return lanes(a[p0.*idx], a[p1.*idx], a[p2.*idx], a[p3.*idx]);
   };
-  ConstantLanes c;
-  if (p0.pc == p1.pc && p0.pc == p2.pc && p0.pc == p3.pc) {  // one material pair (the common case)
-    const PairConstants& k = *p0.pc;
-    c = {_mm256_set1_pd(k.E_eff), _mm256_set1_pd(k.G_eff), _mm256_set1_pd(k.mu),
-         _mm256_set1_pd(k.mu_r),  _mm256_set1_pd(k.damp_n), _mm256_set1_pd(k.damp_t)};
-  } else {
-    const auto field = [&](double PairConstants::*f) { return lanes(p0.pc->*f, p1.pc->*f, p2.pc->*f, p3.pc->*f); };
-    c = {field(&PairConstants::E_eff), field(&PairConstants::G_eff), field(&PairConstants::mu),
-         field(&PairConstants::mu_r),  field(&PairConstants::damp_n), field(&PairConstants::damp_t)};
-  }
+  const ConstantLanes c = constant_lanes(p0.pc, p1.pc, p2.pc, p3.pc);
   const HistoryLanes old{lanes(p0.old->shear, p1.old->shear, p2.old->shear, p3.old->shear),
                          lanes(p0.old->roll, p1.old->roll, p2.old->roll, p3.old->roll)};
-  const d4 dist = sqrt4(lanes(p0.dist2, p1.dist2, p2.dist2, p3.dist2));
+  const d4 dist = sqrt_of(lanes(p0.dist2, p1.dist2, p2.dist2, p3.dist2));
   const d4 delta = lanes(p0.rsum, p1.rsum, p2.rsum, p3.rsum) - dist;
   const ContactLanes in = pair_contact_inputs(
       lanes(p0.sd, p1.sd, p2.sd, p3.sd), dist, delta, gather(s.r, &PairRef::a), gather(s.r, &PairRef::c),

@@ -88,10 +88,19 @@ void Simulation::set_interaction(MaterialId ma, MaterialId mb, const PairInterac
   const int a = ma.index, b = mb.index;
   if (a < 0 || b < 0 || static_cast<std::size_t>(a) >= n_mat_ || static_cast<std::size_t>(b) >= n_mat_)
     throw std::invalid_argument("set_interaction: unknown material index");
-  if (!(p.restitution > 0.0 && p.restitution <= 1.0))
-    throw std::invalid_argument("restitution = " + std::to_string(p.restitution) + " must lie in (0, 1]");
-  if (!(p.friction >= 0.0) || !(p.rolling_friction >= 0.0))
-    throw std::invalid_argument("friction and rolling_friction must be >= 0");
+  for_each_pair_field(
+      [&](const char* name, auto m, double lo, double hi, bool lo_open) {
+        const double v = p.*m;
+        if (lo_open ? (v > lo && v <= hi) : (v >= lo && v <= hi)) return;
+        throw std::invalid_argument(std::string(name) + " = " + std::to_string(v) + " must lie in " +
+                                    (lo_open ? "(" : "[") + std::to_string(lo) + ", " +
+                                    (hi < 1e300 ? std::to_string(hi) + "]" : std::string("inf)")));
+      },
+      [&](const char* name, auto m) {
+        bool known = false;
+        for (const RollingModelInfo& i : kRollingModels) known = known || i.model == p.*m;
+        if (!known) throw std::invalid_argument(std::string(name) + ": not a rolling model of dem/rolling_models.hpp");
+      });
   interactions_[static_cast<std::size_t>(a) * n_mat_ + b] = p;
   interactions_[static_cast<std::size_t>(b) * n_mat_ + a] = p;
   interaction_set_[static_cast<std::size_t>(a) * n_mat_ + b] = 1;

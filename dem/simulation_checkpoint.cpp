@@ -15,9 +15,6 @@ namespace {
 bool same(const Material& a, const Material& b) {
   return a.youngs_modulus == b.youngs_modulus && a.poisson_ratio == b.poisson_ratio && a.density == b.density;
 }
-bool same(const PairInteraction& a, const PairInteraction& b) {
-  return a.restitution == b.restitution && a.friction == b.friction && a.rolling_friction == b.rolling_friction;
-}
 
 [[noreturn]] void refuse(const std::string& what) {
   throw std::invalid_argument("import_state: the state does not fit this engine: " + what);

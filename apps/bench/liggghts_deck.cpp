@@ -69,7 +69,7 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
                "fix wall all wall/gran %s mesh n_meshes 1 meshes cyl\n"
                "fix integ all nve/sphere\n"
                "fix grav all gravity %.17g vector 0 %.17g %.17g\n",
-               k.stl_file.c_str(), k.curvature_deg, W, liggghts::liggghts_wall_model(), c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
+               k.stl_file.c_str(), k.curvature_deg, W, liggghts::liggghts_contact_model(m.particle_wall).c_str(), c.gravity, c.gravity_y() / c.gravity, c.gravity_z() / c.gravity);
   // Cheap thermo during the timed runs (printed only at run start and end); lost atoms stop the run.
   std::fprintf(f,
                "thermo_style custom step atoms ke\n"

@@ -1,6 +1,8 @@
 #include "config/case_dem.hpp"
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace centrec::config {
 
@@ -14,7 +16,16 @@ dem::PairInteraction read_pair(MapReader m, const dem::PairInteraction& def) {
   p.friction = m.number("friction", def.friction, Range::non_negative(), "",
                         "sliding friction coefficient: the Coulomb cap of the tangential force");
   p.rolling_friction = m.number("rolling_friction", def.rolling_friction, Range::non_negative(), "",
-                                "EPSD2 rolling friction coefficient");
+                                "rolling friction coefficient mu_r of the rolling model");
+  std::vector<std::string> models;
+  std::string about = "rolling resistance model (dem/rolling_models.hpp):";
+  for (const dem::RollingModelInfo& i : dem::kRollingModels) {
+    models.push_back(i.name);
+    about += std::string(" ") + i.name + ", " + i.summary + ";";
+  }
+  about.pop_back();
+  const std::string model = m.choice("rolling_model", dem::rolling_model_info(def.rolling_model).name, models, about);
+  dem::rolling_model_named(model, p.rolling_model);
   m.finish();
   return p;
 }
@@ -55,7 +66,7 @@ DemCase read_dem_case(MapReader root) {
   s.wall_material = read_material(wall, s.wall_material, false);
   wall.finish();
 
-  auto contacts = root.child("contacts", "pair interactions (Hertz-Mindlin-EPSD2, docs/dem_physics.md)");
+  auto contacts = root.child("contacts", "pair interactions (Hertz-Mindlin and a rolling model, docs/dem_physics.md)");
   s.particle_particle = read_pair(contacts.child("particle_particle", "particle-particle contacts"), s.particle_particle);
   s.particle_wall = read_pair(contacts.child("particle_wall", "particle-wall contacts"), s.particle_wall);
   s.wall_rolling = contacts.choice("wall_rolling_model", "relative", {"relative", "liggghts"},

@@ -3,7 +3,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 #include "dem/simulation.hpp"
@@ -155,9 +157,35 @@ void visit_engine(IO& io, dem::SimulationState& s) {
   records(io, g + "/materials", s.materials, 3, "Pa, 1, kg/m3",
           [](const dem::Material& m, std::vector<double>& o) { o.insert(o.end(), {m.youngs_modulus, m.poisson_ratio, m.density}); },
           [](const double* p, dem::Material& m) { m = {p[0], p[1], p[2]}; });
-  records(io, g + "/interactions", s.interactions, 3, "1",
-          [](const dem::PairInteraction& m, std::vector<double>& o) { o.insert(o.end(), {m.restitution, m.friction, m.rolling_friction}); },
-          [](const double* p, dem::PairInteraction& m) { m = {p[0], p[1], p[2]}; });
+  // The pair interactions: their numeric fields as columns, their rolling models by name
+  // (an attribute; a checkpoint without it was written when EPSD2 was the only model).
+  std::size_t numeric = 0;
+  dem::for_each_pair_field([&](const char*, auto, double, double, bool) { ++numeric; }, [](const char*, auto) {});
+  records(io, g + "/interactions", s.interactions, numeric, "1",
+          [](const dem::PairInteraction& m, std::vector<double>& o) {
+            dem::for_each_pair_field([&](const char*, auto f, double, double, bool) { o.push_back(m.*f); },
+                                     [](const char*, auto) {});
+          },
+          [](const double* p, dem::PairInteraction& m) {
+            dem::for_each_pair_field([&](const char*, auto f, double, double, bool) { m.*f = *p++; },
+                                     [](const char*, auto) {});
+          });
+  std::string models;
+  if constexpr (IO::reading) {
+    if (io.has(g, "interaction_rolling_models")) {
+      io.text(g, "interaction_rolling_models", models);
+      std::istringstream names(models);
+      std::string name;
+      for (dem::PairInteraction& m : s.interactions)
+        if (!(names >> name) || !dem::rolling_model_named(name, m.rolling_model))
+          throw std::runtime_error("checkpoint: interaction_rolling_models \"" + models +
+                                   "\" does not name a rolling model for each interaction");
+    }
+  } else {
+    for (const dem::PairInteraction& m : s.interactions)
+      models += std::string(models.empty() ? "" : " ") + dem::rolling_model_info(m.rolling_model).name;
+    io.text(g, "interaction_rolling_models", models);
+  }
   vec3s(io, g + "/wall_origins", s.wall_origins, "m");
   vec3s(io, g + "/wall_force", s.wall_force, "N");
   // The per-particle arrays, as the engine lists them (id, material, ..., wall_history).

@@ -1,5 +1,6 @@
 #include "liggghts/liggghts_export.hpp"
 
+#include <cctype>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -251,8 +252,10 @@ std::string deck(const config::CaseFile& cf, const config::DemCase& dc, const Li
     << "read_data " << plan.data << "\n"
     << fmt("neighbor %.9g bin\nneigh_modify delay 0\n", c.skin > 0.0 ? c.skin : 0.2 * d);
 
+  std::string rolling = dem::rolling_model_info(c.particle_particle.rolling_model).name;
+  for (char& ch : rolling) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   s << "\n# --- Materials and contact law: type 1 particles (free and glued), type 2 the drum mesh.\n"
-       "# Hertz normal, Mindlin tangential with history, EPSD2 rolling friction (docs/dem_physics.md).\n"
+    << "# Hertz normal, Mindlin tangential with history, " << rolling << " rolling friction (docs/dem_physics.md).\n"
        "# LIGGGHTS' rolling model sees a particle's absolute angular velocity at a wall contact,\n"
        "# the case's `wall_rolling_model: liggghts`.\n";
   LiggghtsMaterials m;
@@ -260,9 +263,8 @@ std::string deck(const config::CaseFile& cf, const config::DemCase& dc, const Li
   m.particle_poisson_ratio = c.particle.material.poisson_ratio;
   m.wall_youngs_modulus = c.wall_material.youngs_modulus;
   m.wall_poisson_ratio = c.wall_material.poisson_ratio;
-  m.particle_particle = {c.particle_particle.restitution, c.particle_particle.friction,
-                         c.particle_particle.rolling_friction};
-  m.particle_wall = {c.particle_wall.restitution, c.particle_wall.friction, c.particle_wall.rolling_friction};
+  m.particle_particle = c.particle_particle;
+  m.particle_wall = c.particle_wall;
   s << liggghts_material_commands(m) << fmt("timestep %.17g\n", plan.dt);
 
   s << "\n# --- Groups: the glued rough-wall spheres (ids 1.." << plan.glued << ") move with the drum;\n"
@@ -288,7 +290,7 @@ std::string deck(const config::CaseFile& cf, const config::DemCase& dc, const Li
   if (plan.has_ends)
     s << fmt("fix drum_ends all mesh/surface file %s type 2 surface_ang_vel origin 0 0 0 axis 0 0 1 omega %.17g\n",
              plan.ends_stl.c_str(), W);
-  s << "fix walls film wall/gran " << liggghts_wall_model()
+  s << "fix walls film wall/gran " << liggghts_contact_model(c.particle_wall)
     << (plan.has_ends ? " mesh n_meshes 2 meshes drum drum_ends\n" : " mesh n_meshes 1 meshes drum\n");
   if (plan.glued > 0) {
     // fix move rotates right-handed about its axis with a positive period.

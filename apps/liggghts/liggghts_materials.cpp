@@ -20,7 +20,7 @@ std::string liggghts_material_commands(const LiggghtsMaterials& m) {
                 m.particle_youngs_modulus, m.wall_youngs_modulus, m.particle_poisson_ratio, m.wall_poisson_ratio,
                 pp.restitution, pw.restitution, pw.restitution, pw.restitution, pp.friction, pw.friction, pw.friction,
                 pw.friction, pp.rolling_friction, pw.rolling_friction, pw.rolling_friction, pw.rolling_friction,
-                liggghts_wall_model());
+                liggghts_contact_model(pp).c_str());
   return buf;
 }
 

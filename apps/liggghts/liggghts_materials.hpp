@@ -1,15 +1,17 @@
 #pragma once
 // The LIGGGHTS 3.8 material and contact-law commands shared by the exported deck and
 // the benchmark deck: two atom types (1 = particles, 2 = walls), per-type E and nu,
-// per-type-pair e, mu and mu_r, Hertz + tangential history + EPSD2 rolling friction
+// per-type-pair e, mu and mu_r, Hertz + tangential history + the pair's rolling model
 // (the native engine's law, docs/dem_physics.md).
 #include <string>
 
+#include "dem/material.hpp"
+
 namespace centrec::liggghts {
 
-struct LiggghtsContactPair {
-  double restitution = 0.0, friction = 0.0, rolling_friction = 0.0;
-};
+// The native engine's pair interaction: its fields (dem/material.hpp for_each_pair_field)
+// are the per-type-pair properties and the rolling model the `rolling_friction` keyword.
+using LiggghtsContactPair = dem::PairInteraction;
 
 struct LiggghtsMaterials {
   double particle_youngs_modulus = 0.0, wall_youngs_modulus = 0.0;  // Pa
@@ -20,7 +22,10 @@ struct LiggghtsMaterials {
 // "fix m1..m5 property/global ..." then the pair_style and pair_coeff lines.
 std::string liggghts_material_commands(const LiggghtsMaterials& m);
 
-// The wall/gran model arguments matching the pair style.
-inline const char* liggghts_wall_model() { return "model hertz tangential history rolling_friction epsd2"; }
+// The contact model arguments of `pair_style gran` (p: particle-particle) and of a
+// `fix wall/gran` (p: particle-wall).
+inline std::string liggghts_contact_model(const LiggghtsContactPair& p) {
+  return std::string("model hertz tangential history rolling_friction ") + dem::rolling_model_info(p.rolling_model).liggghts;
+}
 
 }  // namespace centrec::liggghts

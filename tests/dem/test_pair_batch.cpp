@@ -32,13 +32,16 @@ struct Random {
   Vec3 vec(double lo, double hi) { return log_uniform(lo, hi) * direction(); }
 };
 
-// Material pairs: random moduli, restitution, friction; a quarter with mu_r = 0.
+// Material pairs: random moduli, restitution, friction; a quarter with mu_r = 0; half of
+// them EPSD2, half CDT rolling.
 std::vector<PairConstants> random_pairs(Random& rnd, int count) {
   std::vector<PairConstants> pcs;
   for (int k = 0; k < count; ++k) {
     const Material a{rnd.log_uniform(1e6, 1e9), rnd.uniform(0.1, 0.45), rnd.uniform(1000, 8000)};
     const Material b{rnd.log_uniform(1e6, 1e9), rnd.uniform(0.1, 0.45), rnd.uniform(1000, 8000)};
-    const PairInteraction p{rnd.uniform(0.1, 1.0), rnd.uniform(0.0, 1.2), k % 4 == 0 ? 0.0 : rnd.uniform(0.0, 0.6)};
+    // Rolling models: EPSD2 and CDT in turn.
+    const PairInteraction p{rnd.uniform(0.1, 1.0), rnd.uniform(0.0, 1.2), k % 4 == 0 ? 0.0 : rnd.uniform(0.0, 0.6),
+                            k % 2 == 0 ? RollingModel::epsd2 : RollingModel::cdt};
     pcs.push_back(make_pair_constants(a, b, p));
   }
   return pcs;
@@ -81,9 +84,7 @@ TEST(PairBatch, LawLanesAreScalarBitForBit) {
       old[k] = random_history(rnd);
     }
     const auto d = [&](auto f) { return pb::lanes(f(0), f(1), f(2), f(3)); };
-    const pb::ConstantLanes cl{d([&](int k) { return pc[k]->E_eff; }), d([&](int k) { return pc[k]->G_eff; }),
-                               d([&](int k) { return pc[k]->mu; }),    d([&](int k) { return pc[k]->mu_r; }),
-                               d([&](int k) { return pc[k]->damp_n; }), d([&](int k) { return pc[k]->damp_t; })};
+    const pb::ConstantLanes cl = pb::constant_lanes(pc[0], pc[1], pc[2], pc[3]);
     const pb::ContactLanes il{d([&](int k) { return in[k].delta; }),   d([&](int k) { return in[k].n; }),
                               d([&](int k) { return in[k].v_contact; }), d([&](int k) { return in[k].w_rel; }),
                               d([&](int k) { return in[k].r_eff; }),   d([&](int k) { return in[k].m_eff; }),

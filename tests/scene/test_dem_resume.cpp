@@ -188,3 +188,30 @@ TEST(DemResume, ControlledSliceStateRoundTripsThroughTheCheckpointFile) {
               scene.mass_flow_log().back().axial_flow, resumed.mass_flow_log().back().axial_flow);
   std::filesystem::remove_all(dir);
 }
+
+// The checkpoint keeps each pair interaction's rolling model (by name, beside the numeric
+// fields): a CDT particle-wall interaction comes back as CDT, EPSD2 as EPSD2.
+TEST(DemResume, CheckpointKeepsEachInteractionsRollingModel) {
+  const std::string dir = temp_dir("centrec_rolling_models");
+  RunCheckpoint c;
+  c.code_version = "test";
+  c.phase = "spin-up";
+  c.scene.engine.materials = {dem::Material{}, dem::Material{}};
+  c.scene.engine.interactions = {dem::PairInteraction{0.5, 0.8, 0.2, dem::RollingModel::epsd2},
+                                 dem::PairInteraction{0.4, 1e4, 0.3, dem::RollingModel::cdt},
+                                 dem::PairInteraction{0.4, 1e4, 0.3, dem::RollingModel::cdt},
+                                 dem::PairInteraction{0.5, 0.8, 0.0, dem::RollingModel::epsd2}};
+  write_checkpoint(dir, c);
+  const RunCheckpoint back = read_checkpoint(dir);
+  ASSERT_EQ(back.scene.engine.interactions.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    const dem::PairInteraction &a = c.scene.engine.interactions[k], &b = back.scene.engine.interactions[k];
+    EXPECT_TRUE(dem::same(a, b)) << "interaction " << k;
+    EXPECT_EQ(static_cast<int>(b.rolling_model), static_cast<int>(a.rolling_model)) << "interaction " << k;
+  }
+  std::printf("checkpoint rolling models: %s %s %s %s\n",
+              dem::rolling_model_info(back.scene.engine.interactions[0].rolling_model).name,
+              dem::rolling_model_info(back.scene.engine.interactions[1].rolling_model).name,
+              dem::rolling_model_info(back.scene.engine.interactions[2].rolling_model).name,
+              dem::rolling_model_info(back.scene.engine.interactions[3].rolling_model).name);
+}
