@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -113,6 +114,22 @@ MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut) {
   f.scaling = "none: the DEM drum itself";
   f.check();
   return out;
+}
+
+FilmMappingResult map_film_as_measured(const DemFilmAverages& a) {
+  MappedFilm m = map_dem_film(a);
+  FilmMappingResult r{std::move(m.film), {}};
+  FilmMappingReport& rep = r.report;
+  rep.mapping = "as_measured";
+  rep.figures = {{"film_solid_fraction_cut", m.cut.phi_cut}};
+  rep.profiles = {{"film_thickness", "m", m.cut.thickness, "", ""},
+                  {"flow_within_film_share", "1", m.cut.flow_within_share, "flow_within_film_share_min", ""}};
+  const auto [lo, hi] = std::minmax_element(m.cut.flow_within_share.begin(), m.cut.flow_within_share.end());
+  char b[160];
+  std::snprintf(b, sizeof b, "where phi >= %.2g (%.1f-%.1f %% of the DEM's flow inside)", m.cut.phi_cut, 100.0 * *lo,
+                100.0 * *hi);
+  rep.text = b;
+  return r;
 }
 
 }  // namespace centrec::coupling

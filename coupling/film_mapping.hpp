@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "coupling/dem_film_averages.hpp"
+#include "coupling/film_mappings.hpp"
 #include "dem/film/developed_film.hpp"
 #include "thermal/film_field.hpp"
 
@@ -40,5 +41,10 @@ struct MappedFilm {
 
 // Throws std::invalid_argument naming the problem (empty film, no flow, ...).
 MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut = kFilmSolidFractionCut);
+
+// map_dem_film at kFilmSolidFractionCut as a row of film_mappings(): the cut as the figure
+// film_solid_fraction_cut, per section the film's thickness (film_thickness, m) and the
+// share of the bins' flow inside it (flow_within_film_share).
+FilmMappingResult map_film_as_measured(const DemFilmAverages& a);
 
 }  // namespace centrec::coupling

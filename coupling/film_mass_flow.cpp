@@ -45,10 +45,12 @@ FlowClosure flow_closure(const thermal::FilmField& f, double rho_s, double measu
   c.measured_mdot = measured_mdot;
   const double R = 0.5 * f.drum_diameter;
   double sum = 0.0;
+  c.min_over_measured = 1e300, c.max_over_measured = -1e300;
   for (std::size_t i = 0; i < f.nz(); ++i) {
     const double r = cylindrical_mass_flow(f, i, rho_s, R) / measured_mdot;
     c.section_over_measured.push_back(r);
     c.worst_error = std::max(c.worst_error, std::abs(r - 1.0));
+    c.min_over_measured = std::min(c.min_over_measured, r), c.max_over_measured = std::max(c.max_over_measured, r);
     sum += r;
   }
   c.mean_over_measured = sum / static_cast<double>(f.nz());

@@ -29,6 +29,7 @@ struct FlowClosure {
   std::vector<double> section_over_measured;  // per section: cylindrical flow of the film / measured
   double mean_over_measured = 0.0;         // their mean
   double worst_error = 0.0;                // max |section / measured - 1|
+  double min_over_measured = 0.0, max_over_measured = 0.0;  // the lowest and highest section
 };
 FlowClosure flow_closure(const thermal::FilmField& f, double rho_s, double measured_mdot);
 

@@ -57,8 +57,8 @@ int cmd_budget(const Args& args) {
     if (c.film.particle_diameter > 0.0 && std::abs(c.film.particle_diameter / c.model.material.d - 1.0) > 1e-6)
       throw UsageError(film_path + ": the film is for particles of d = " + std::to_string(c.film.particle_diameter) +
                        " m but the case's are " + std::to_string(c.model.material.d) + " m");
-    c.film_source = film_path;
-  } else if (c.film_source == "dem") {
+    c.film_source = {config::FilmSource::Kind::file, film_path, ""};
+  } else if (c.film_source.from_dem()) {
     throw UsageError(case_path + " takes its film from the DEM: give --film OUT/film.h5 from a `centrec run` of it "
                                  "(the budget runs no DEM)");
   }
@@ -76,7 +76,7 @@ int cmd_budget(const Args& args) {
   runs::BudgetResult r = runs::run_thermal_budget(c, s);
   if (dem.given) runs::add_replica_spread(r, dem);
   nlohmann::json j = runs::budget_json(r);
-  j["film"] = c.film_source;
+  j["film"] = c.film_source.text();
   io::write_json_file(out_dir + "/summary.json", j);
   runs::print_budget_table(r);
   std::printf("wrote %s/summary.json\n", out_dir.c_str());

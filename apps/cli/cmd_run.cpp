@@ -75,7 +75,7 @@ std::string parent_of(const std::string& dir) {
 // DIR/replica_<k>/, then the spread of the headline figures (runs/replica_summary.hpp).
 int run_replicas(const Args& args, const std::string& case_path, const std::string& out_dir,
                  const config::CaseFile& cf, const runs::RunOptions& o, int replicas, bool no_plots) {
-  if (!(cf.dem && cf.thermal && cf.thermal->film_source == "dem"))
+  if (!(cf.dem && cf.thermal && cf.thermal->film_source.from_dem()))
     throw UsageError(case_path + ": --replicas repeats the DEM with other seeds, but this case has no DEM film");
   const long long base = o.seed >= 0 ? o.seed : static_cast<long long>(cf.dem->scene.seed);
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -172,7 +172,7 @@ int cmd_run(const Args& args) {
   if (o.cache_dir.empty()) o.cache_dir = parent_of(out_dir) + "/dem-cache";
   const config::CaseFile cf = config::read_case_file(case_path);
   const config::Overrides overrides = runs::run_overrides(o);
-  if (cf.dem && cf.thermal && cf.thermal->film_source == "dem") checked_dem(cf, overrides);
+  if (cf.dem && cf.thermal && cf.thermal->film_source.from_dem()) checked_dem(cf, overrides);
   if (replicas > 1 && !o.dem_from.empty())
     throw UsageError("--replicas runs the DEM with other seeds; --dem-from takes one earlier run: give one of them");
   if (replicas > 1) return run_replicas(args, case_path, out_dir, cf, o, replicas, no_plots);
@@ -194,29 +194,26 @@ int cmd_run(const Args& args) {
   const auto& b = r.result.balance;
   const auto& k = s["k_eff"]["film_mean"];
   std::printf("centrec run %s\n", case_path.c_str());
-  if (r.film_from_dem) {
+  if (r.film_from_dem()) {
     const auto& sd = r.dem.scene;
     const char* source = r.dem_given ? "from an earlier run" : r.dem_cached ? "from cache" : "run";
     std::printf("  DEM %s (%s): %s D = %.4g m (D/d %.0f), %.2f rpm\n", source, r.dem_dir.c_str(),
                 sd.slice.enabled ? "slice of the drum" : "drum", sd.drum.diameter,
                 sd.drum.diameter / sd.particle.diameter, coupling::rad_per_s_to_rpm(sd.drum.omega));
     std::printf("  DEM steady state: %s\n", r.averages.steady_text.c_str());
-    std::printf("  film as measured: %.2f d thick where phi >= %.2g (%.1f-%.1f %% of the DEM's flow inside); "
-                "eqs 4-7 thickness %.2f d; moving zone %.0f %% of the circumference\n",
-                s["film"]["mean_thickness_d"].get<double>(), r.cut.phi_cut,
-                100.0 * s["coupling"]["flow_within_film_share_min"].get<double>(),
-                100.0 * *std::max_element(r.cut.flow_within_share.begin(), r.cut.flow_within_share.end()),
-                s["dem"]["summary"].value("mean_film_thickness_d", 0.0), 100.0 * r.averages.moving_fraction);
+    std::printf("  film (%s mapping): %.2f d thick %s; eqs 4-7 thickness %.2f d; moving zone %.0f %% of the "
+                "circumference\n",
+                r.mapping.mapping.c_str(), runs::film_thickness(r).mean_d, r.mapping.text.c_str(),
+                r.dem_summary.value("mean_film_thickness_d", 0.0), 100.0 * r.averages.moving_fraction);
     std::printf("  flux closure: the film carries %.1f %% of the measured %.4g g/s (sections %.1f-%.1f %%, tolerance "
-                "5 %%)\n",
-                100.0 * r.closure.mean_over_measured, r.averages.mdot * 1e3,
-                100.0 * s["coupling"]["flow_closure_min"].get<double>(),
-                100.0 * s["coupling"]["flow_closure_max"].get<double>());
+                "%.0f %%)\n",
+                100.0 * r.closure.mean_over_measured, r.averages.mdot * 1e3, 100.0 * r.closure.min_over_measured,
+                100.0 * r.closure.max_over_measured, 100.0 * coupling::kFlowClosureTolerance);
   }
   if (r.has_receiver)
     std::printf("  scaled up to the receiver D = %.4g m, L = %.4g m, %.2f rpm: z x %.4g\n", r.receiver.op.diameter,
                 r.receiver.op.length, coupling::rad_per_s_to_rpm(r.receiver.op.omega), r.scale.length_ratio);
-  if (r.film_from_dem)
+  if (r.film_from_dem())
     std::printf("  imposed the case's %.4g kg/s with one velocity factor %.4f\n", r.imposed.mdot, r.imposed.factor);
   for (const auto& w : r.warnings) std::printf("  WARNING: %s\n", w.c_str());
   std::printf("  outlet temperature %.2f K (%.2f C) from %.2f K, efficiency %.4f, mdot %.4g kg/s\n", b.T_out,
@@ -228,7 +225,7 @@ int cmd_run(const Args& args) {
               r.dem_seconds, r.mapping_seconds, r.thermal_seconds, out_dir.c_str());
   if (plots) {
     std::vector<std::string> plot_args = {out_dir};
-    if (r.film_from_dem) plot_args.insert(plot_args.end(), {"--dem", r.dem_dir});
+    if (r.film_from_dem()) plot_args.insert(plot_args.end(), {"--dem", r.dem_dir});
     run_plot_script("centrec run", "plot_run.py", plot_args);
   }
   return 0;

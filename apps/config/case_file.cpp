@@ -40,7 +40,7 @@ CaseFile read_case(MapReader root, const std::string& path) {
     read_thermal_sections(root, case_directory(path), t, c.dem.has_value());
     c.thermal = std::move(t);
   }
-  if (c.dem && c.thermal && c.thermal->film_source == "dem")
+  if (c.dem && c.thermal && c.thermal->film_source.from_dem())
     if (const auto p = coupled_run_problem(*c.dem, *c.thermal, c.receiver ? &*c.receiver : nullptr)) root.fail_path(p->key, p->message);
   if (root.has("sweep")) c.sweep = read_sweep(root.child("sweep", "the operating map of `centrec sweep`: speed x mass flow"));
   if (c.sweep && c.dem)

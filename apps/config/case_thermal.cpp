@@ -65,7 +65,7 @@ void read_film(MapReader r, const std::string& case_dir, double particle_d, Ther
     af.length = a.number("length", af.length, Range::open_closed(0.0, 100.0), "m", "axial length of the film");
     a.finish();
     c.film = th::analytic_film(af);
-    c.film_source = "analytic";
+    c.film_source = {FilmSource::Kind::analytic, "", ""};
   } else {
     const std::string path = resolve_path(case_dir, r.string("file", "", "a stored film field (film.h5 of `centrec run`), relative to the case file"));
     const std::string group = r.string("group", "/film", "the HDF5 group of the film field in that file");
@@ -79,7 +79,7 @@ void read_film(MapReader r, const std::string& case_dir, double particle_d, Ther
     if (c.film.particle_diameter > 0.0 && std::abs(c.film.particle_diameter / particle_d - 1.0) > 1e-6)
       r.fail("file", path + ": the film field is for particles of d = " + std::to_string(c.film.particle_diameter) +
                          " m but thermal.material.d = " + std::to_string(particle_d) + " m (mismatched film file)");
-    c.film_source = path;
+    c.film_source = {FilmSource::Kind::file, path, ""};
   }
   r.finish();
 }
@@ -250,7 +250,7 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   m.material = read_material(t.child("material", "the particles' thermal properties (defaults: thermal.particle's)"),
                              m.material);
   if (film_from_dem && !root.has("film"))
-    c.film_source = "dem";
+    c.film_source.kind = FilmSource::Kind::dem;
   else
     read_film(root.child("film", "the film the thermal model heats: analytic or from a file (coupled cases: from the DEM)"),
               case_dir, m.material.d, c);
@@ -318,7 +318,7 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   if (!cav.enabled && m.flux.aperture_mean > 0.0)
     t.fail("flux", "gives q_aperture, the flux through the cavity's aperture, but thermal.radiation.model is "
                    "open_surface, which has no aperture: give flux.q_film or use the cavity model");
-  if (cav.enabled && c.film_source != "dem" && cav.aperture_diameter > c.film.drum_diameter * (1 + 1e-9))
+  if (cav.enabled && !c.film_source.from_dem() && cav.aperture_diameter > c.film.drum_diameter * (1 + 1e-9))
     rad.fail("aperture_diameter", "exceeds the drum diameter " + std::to_string(c.film.drum_diameter) + " m of the film");
   rad.finish();
   MapReader s = t.child("surface", "the film surface's surroundings");
@@ -353,7 +353,7 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   }
   t.finish();
   // What the thermal run checks as it sets up (grid, film, cavity), before any work.
-  if (c.film_source != "dem") {
+  if (!c.film_source.from_dem()) {
     std::unique_ptr<thermal::FilmOperator> op;
     try {
       op = std::make_unique<thermal::FilmOperator>(c.film, m, c.grid);
@@ -376,6 +376,18 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
       root.fail("thermal", why);
     }
   }
+}
+
+std::string FilmSource::text() const {
+  switch (kind) {
+    case Kind::analytic:
+      return "analytic";
+    case Kind::file:
+      return file;
+    case Kind::dem:
+      break;
+  }
+  return file.empty() ? "dem" : "dem: " + file;
 }
 
 std::string case_directory(const std::string& case_path) {

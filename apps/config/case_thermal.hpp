@@ -13,10 +13,24 @@
 
 namespace centrec::config {
 
+// Where a thermal case's film comes from: the analytic film of `film: {analytic:}`, a stored
+// film field (`film: {file:}`), or a coupled run's DEM through a film mapping
+// (coupling/film_mappings.hpp).
+struct FilmSource {
+  enum class Kind { analytic, file, dem };
+  Kind kind = Kind::analytic;
+  std::string file;  // file: the film field read; dem: the dem.h5 mapped ("" until the coupled run sets it)
+  std::string mapping = "as_measured";  // dem: the film mapping's name
+
+  bool from_dem() const { return kind == Kind::dem; }
+  // As the outputs record it: "analytic", the file, "dem" or "dem: <dem.h5>".
+  std::string text() const;
+};
+
 struct ThermalCase {
   std::string path, title;
   thermal::FilmField film;
-  std::string film_source;  // "analytic" or the HDF5 file it was read from
+  FilmSource film_source;
   std::string particle;     // thermal.particle: the name in thermal/particle_data.hpp
   thermal::FilmModel model;
   thermal::FilmGridSpec grid;
@@ -28,7 +42,7 @@ struct ThermalCase {
 
 // Reads the sections `film` and `thermal` from a root reader (shared by other case readers).
 // With film_from_dem, a missing `film` section is allowed: the coupled run supplies the film
-// (film_source "dem").
+// (FilmSource::Kind::dem).
 void read_thermal_sections(MapReader& root, const std::string& case_dir, ThermalCase& c,
                            bool film_from_dem = false);
 // Folder of a case file, against which its relative file paths resolve ("" = cwd).

@@ -12,8 +12,8 @@ namespace centrec::runs {
 namespace {
 void write_coupling_group(io::H5File& f, const CoupledRun& r) {
   f.create_group("/coupling");
-  f.set_attribute("/coupling", "film_source", r.thermal.film_source);
-  if (!r.film_from_dem) return;
+  f.set_attribute("/coupling", "film_source", r.thermal.film_source.text());
+  if (!r.film_from_dem()) return;
   const auto& c = r.closure;
   const auto& m = r.imposed;
   f.set_attribute("/coupling", "dem_cache_key", r.cache_key);
@@ -21,7 +21,7 @@ void write_coupling_group(io::H5File& f, const CoupledRun& r) {
   f.set_attribute("/coupling", "dem_target_mdot_kg_s", r.averages.mdot_target);
   f.set_attribute("/coupling", "dem_steady", r.averages.steady ? 1.0 : 0.0);
   f.set_attribute("/coupling", "dem_steady_state", r.averages.steady_text);
-  f.set_attribute("/coupling", "film_solid_fraction_cut", r.cut.phi_cut);
+  for (const auto& fig : r.mapping.figures) f.set_attribute("/coupling", fig.name, fig.value);
   f.set_attribute("/coupling", "flow_closure_mean", c.mean_over_measured);
   f.set_attribute("/coupling", "flow_closure_worst_error", c.worst_error);
   f.set_attribute("/coupling", "imposed_mdot_kg_s", m.mdot);
@@ -32,8 +32,7 @@ void write_coupling_group(io::H5File& f, const CoupledRun& r) {
   f.set_attribute("/coupling", "moving_fraction", r.averages.moving_fraction);
   f.set_attribute("/coupling", "scaling", r.thermal.film.scaling);
   f.write("/coupling/flow_closure", c.section_over_measured, "1");
-  f.write("/coupling/film_thickness", r.cut.thickness, "m");
-  f.write("/coupling/flow_within_film_share", r.cut.flow_within_share, "1");
+  for (const auto& p : r.mapping.profiles) f.write("/coupling/" + p.name, p.values, p.unit);
   f.write("/coupling/dem_section_z", r.averages.section_z, "m");
   f.write("/coupling/dem_thickness", r.averages.thickness, "m");
   f.write("/coupling/dem_thickness_std", r.averages.thickness_std, "m");
@@ -50,22 +49,33 @@ void write_coupled_h5(const std::string& dir, const CoupledRun& r, const io::Pro
   io::write_text_atomically(dir + "/results.xmf", thermal_xdmf("results.h5", r.result));
   io::H5File film = io::H5File::create(dir + "/film.h5");
   io::write_provenance(film, p);
-  film.set_attribute("/", "film_source", r.thermal.film_source);
+  film.set_attribute("/", "film_source", r.thermal.film_source.text());
   io::write_film_field(film, r.thermal.film, "/film");
   film.commit();
+}
+
+FilmThickness film_thickness(const CoupledRun& r) {
+  const thermal::FilmField& f = r.thermal.film;
+  const double d = f.particle_diameter > 0.0 ? f.particle_diameter : r.thermal.model.material.d;
+  double t_sum = 0.0;
+  for (double t : f.t) t_sum += t;
+  FilmThickness t;
+  t.mean_m = t_sum / f.t.size();
+  t.mean_d = t_sum / f.t.size() / d;
+  t.min_d = *std::min_element(f.t.begin(), f.t.end()) / d;
+  t.max_d = *std::max_element(f.t.begin(), f.t.end()) / d;
+  return t;
 }
 
 nlohmann::json coupled_summary(const CoupledRun& r) {
   nlohmann::json j = thermal_summary(r.thermal, r.result);
   const thermal::FilmField& f = r.thermal.film;
-  const double d = f.particle_diameter > 0.0 ? f.particle_diameter : r.thermal.model.material.d;
-  double t_sum = 0.0;
-  for (double t : f.t) t_sum += t;
-  j["film"] = {{"source", r.thermal.film_source},
-               {"mean_thickness_m", t_sum / f.t.size()},
-               {"mean_thickness_d", t_sum / f.t.size() / d},
-               {"min_thickness_d", *std::min_element(f.t.begin(), f.t.end()) / d},
-               {"max_thickness_d", *std::max_element(f.t.begin(), f.t.end()) / d},
+  const FilmThickness t = film_thickness(r);
+  j["film"] = {{"source", r.thermal.film_source.text()},
+               {"mean_thickness_m", t.mean_m},
+               {"mean_thickness_d", t.mean_d},
+               {"min_thickness_d", t.min_d},
+               {"max_thickness_d", t.max_d},
                {"length_m", f.length},
                {"mdot_kg_s", f.mdot},
                {"scaling", f.scaling}};
@@ -73,7 +83,7 @@ nlohmann::json coupled_summary(const CoupledRun& r) {
                       {"coupling", r.mapping_seconds},
                       {"thermal", r.thermal_seconds},
                       {"total", r.dem_seconds + r.mapping_seconds + r.thermal_seconds}};
-  if (!r.film_from_dem) return j;
+  if (!r.film_from_dem()) return j;
   const auto& c = r.closure;
   const auto& m = r.imposed;
   const auto& sd = r.dem.scene;
@@ -94,19 +104,20 @@ nlohmann::json coupled_summary(const CoupledRun& r) {
               {"moving_fraction", r.averages.moving_fraction},
               {"sampled_turns", r.averages.sampled_turns},
               {"summary", r.dem_summary}};
-  double lo = 1e300, hi = -1e300, share_lo = 1e300;
-  for (double x : c.section_over_measured) lo = std::min(lo, x), hi = std::max(hi, x);
-  for (double x : r.cut.flow_within_share) share_lo = std::min(share_lo, x);
-  j["coupling"] = {{"film_solid_fraction_cut", r.cut.phi_cut},
+  j["coupling"] = {{"film_mapping", r.mapping.mapping},
                    {"flow_closure_mean", c.mean_over_measured},
-                   {"flow_closure_min", lo},
-                   {"flow_closure_max", hi},
+                   {"flow_closure_min", c.min_over_measured},
+                   {"flow_closure_max", c.max_over_measured},
                    {"flow_closure_tolerance", coupling::kFlowClosureTolerance},
-                   {"flow_within_film_share_min", share_lo},
                    {"imposed_mdot_kg_s", m.mdot},
                    {"imposed_velocity_factor", m.factor},
                    {"mean_flux_depth_m", m.mean_flux_depth},
                    {"planar_diameter_m", m.planar_diameter}};
+  for (const auto& fig : r.mapping.figures) j["coupling"][fig.name] = fig.value;
+  for (const auto& p : r.mapping.profiles) {
+    if (!p.min_as.empty()) j["coupling"][p.min_as] = *std::min_element(p.values.begin(), p.values.end());
+    if (!p.max_as.empty()) j["coupling"][p.max_as] = *std::max_element(p.values.begin(), p.values.end());
+  }
   j["warnings"] = r.warnings;
   if (r.has_receiver) {
     const auto& s = r.scale;

@@ -16,4 +16,10 @@ namespace centrec::runs {
 void write_coupled_h5(const std::string& dir, const CoupledRun& r, const io::Provenance& p);
 nlohmann::json coupled_summary(const CoupledRun& r);
 
+// The coupled film's thickness over its sections, in particle diameters.
+struct FilmThickness {
+  double mean_m = 0.0, mean_d = 0.0, min_d = 0.0, max_d = 0.0;
+};
+FilmThickness film_thickness(const CoupledRun& r);
+
 }  // namespace centrec::runs

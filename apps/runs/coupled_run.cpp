@@ -65,14 +65,13 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
   if (!cf.thermal) throw std::invalid_argument(cf.path + ": a coupled run needs a `thermal:` section");
   CoupledRun r;
   r.thermal = *cf.thermal;
-  r.film_from_dem = r.thermal.film_source == "dem";
-  if (!o.dem_from.empty() && (!r.film_from_dem || o.speed_rpm > 0.0 || o.mass_flow > 0.0 || o.seed >= 0))
+  if (!o.dem_from.empty() && (!r.film_from_dem() || o.speed_rpm > 0.0 || o.mass_flow > 0.0 || o.seed >= 0))
     throw std::invalid_argument(cf.path + ": --dem-from takes the film of an earlier DEM run as it ran; it goes with "
                                           "neither a case without a DEM film nor --speed-rpm, --mass-flow or --seed");
-  if (!r.film_from_dem && (o.speed_rpm > 0.0 || o.mass_flow > 0.0))
+  if (!r.film_from_dem() && (o.speed_rpm > 0.0 || o.mass_flow > 0.0))
     throw std::invalid_argument(cf.path + ": --speed-rpm / --mass-flow change the DEM, but this case takes its film "
-                                          "from " + r.thermal.film_source + " (no DEM to rerun)");
-  if (r.film_from_dem) {
+                                          "from " + r.thermal.film_source.text() + " (no DEM to rerun)");
+  if (r.film_from_dem()) {
     if (!cf.dem) throw std::invalid_argument(cf.path + ": give a `dem:` section or `film: {file: ...}`");
     effective_dem(cf, o, r);
     check_same_particles(r);
@@ -121,8 +120,8 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
                                                      std::to_string(r.dem.run.steady_tolerance) +
                                                      "; lengthen run.duration or run.max_extension)",
                     o.allow_unsteady, "--allow-unsteady", r.dem_dir);
-    coupling::MappedFilm mapped = coupling::map_dem_film(r.averages);
-    r.cut = mapped.cut;
+    coupling::FilmMappingResult mapped = coupling::film_mapping(r.thermal.film_source.mapping).map(r.averages);
+    r.mapping = std::move(mapped.report);
     thermal::FilmField film = std::move(mapped.film);
     // The flow the film carries, against the DEM's measured flow, at the DEM's scale.
     r.closure = coupling::flow_closure(film, r.averages.particle_density, r.averages.mdot);
@@ -139,7 +138,7 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
     }
     r.imposed = coupling::impose_mass_flow(film, r.averages.particle_density, mdot);
     r.thermal.film = std::move(film);
-    r.thermal.film_source = "dem: " + r.dem_dir + "/dem.h5";
+    r.thermal.film_source.file = r.dem_dir + "/dem.h5";
     r.mapping_seconds = since(t1);
   }
   // 3. Thermal.

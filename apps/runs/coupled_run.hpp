@@ -2,7 +2,7 @@
 // The coupled run behind `centrec run` (docs/architecture.md):
 // DEM of the scaled-down drum -> its averaged film (coupling/dem_film_from_run, in memory;
 // read back from dem.h5 when the DEM comes from the cache) ->
-// the film as measured, full circumference (coupling/film_mapping) -> its flux closure
+// the thermal film by the case's film mapping (coupling/film_mappings) -> its flux closure
 // against the DEM's measured flow (coupling/film_mass_flow) -> scale-up to the receiver
 // (coupling/film_scale_up) -> the case's mass flow imposed by one factor -> thermal steady
 // state (and transient). A case that gives `film: {file: ...}` skips the DEM; so does a
@@ -16,7 +16,7 @@
 #include "config/case_checks.hpp"
 #include "config/case_file.hpp"
 #include "coupling/dem_film_averages.hpp"
-#include "coupling/film_mapping.hpp"
+#include "coupling/film_mappings.hpp"
 #include "coupling/film_mass_flow.hpp"
 #include "coupling/film_scale_up.hpp"
 #include "runs/thermal_case_run.hpp"
@@ -38,14 +38,13 @@ struct CoupledRun {
   config::DemCase dem;                     // the DEM actually run (receiver derivation and overrides applied)
   bool has_receiver = false;
   config::ReceiverCase receiver;
-  bool film_from_dem = false;      // false: the case's film file was used, no DEM
   std::string dem_dir, cache_key;  // where dem.h5 came from
   bool dem_cached = false;
   bool dem_given = false;          // taken from RunOptions::dem_from
   std::string dem_resumed_from;  // the killed run's cache folder this run continued ("" = none)
   nlohmann::json dem_summary;
   coupling::DemFilmAverages averages;
-  coupling::FilmCut cut;
+  coupling::FilmMappingReport mapping;
   coupling::FlowClosure closure;
   coupling::ScaleUpRecord scale;
   coupling::ImposedFlow imposed;
@@ -53,6 +52,9 @@ struct CoupledRun {
   config::ThermalCase thermal;             // with the coupled film
   ThermalRun result;
   double dem_seconds = 0.0, mapping_seconds = 0.0, thermal_seconds = 0.0;
+
+  // false: the case's analytic film or film file was used, no DEM.
+  bool film_from_dem() const { return thermal.film_source.from_dem(); }
 };
 
 // The options as config::Overrides (unset where they take the case's value).

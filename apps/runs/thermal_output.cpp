@@ -142,7 +142,7 @@ std::string thermal_xdmf(const std::string& h5_name, const ThermalRun& r) {
 void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r, const io::Provenance& p) {
   io::write_provenance(f, p);
   f.set_attribute("/", "title", c.title);
-  f.set_attribute("/", "film_source", c.film_source);
+  f.set_attribute("/", "film_source", c.film_source.text());
   const thermal::FilmGrid& g = r.op->grid();
   const std::size_t nz = g.nz, nxi = g.nxi;
   std::vector<double> xi(nxi), eta(nz * nxi);
@@ -251,7 +251,7 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
   j["centrec_version"] = centrec::io::code_version();
   j["case"] = c.path;
   j["title"] = c.title;
-  j["film_source"] = c.film_source;
+  j["film_source"] = c.film_source.text();
   j["model"] = {{"kind", c.grid.lumped ? "1d" : "2d"},
                 {"nz", g.nz},
                 {"nxi", g.nxi},

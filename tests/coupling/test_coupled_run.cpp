@@ -196,7 +196,7 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
   const CaseFile reuse = edited_case(dir, "thermal:\n", "film: {file: " + dir + "/film.h5}\nthermal:\n");
   const CoupledRun fr = run_coupled_case(reuse, o);
   std::printf("from film.h5: T_out %.6f K (coupled %.6f K)\n", fr.result.balance.T_out, T1);
-  EXPECT_FALSE(fr.film_from_dem);
+  EXPECT_FALSE(fr.film_from_dem());
   EXPECT_NEAR(fr.result.balance.T_out, T1, 1e-9);
   fs::remove_all(dir);
 }

@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "coupling/film_mapping.hpp"
+#include "coupling/film_mappings.hpp"
 #include "coupling/film_mass_flow.hpp"
 #include "coupling/film_scale_up.hpp"
 #include "coupling/glued_layer.hpp"
@@ -200,4 +201,21 @@ TEST(FilmMapping, MappedFilmRunsTheThermalModelIn1DAnd2D) {
     EXPECT_NEAR(b.mass_flow / a.mdot, 1.0, 1e-2);
     EXPECT_GT(b.T_out, model.T_in + 10.0);
   }
+}
+
+TEST(FilmMapping, TheRegistryRowIsTheMappingWithItsReport) {
+  const auto a = test::synthetic_dem_film(0.12);
+  const auto m = coupling::map_dem_film(a);
+  const coupling::FilmMappingEntry& e = coupling::film_mapping("as_measured");
+  EXPECT_EQ(&e, &coupling::film_mappings().front());  // the default
+  const coupling::FilmMappingResult r = e.map(a);
+  EXPECT_EQ(r.film.u, m.film.u);
+  EXPECT_EQ(r.film.t, m.film.t);
+  EXPECT_EQ(r.report.mapping, "as_measured");
+  EXPECT_EQ(r.report.figure("film_solid_fraction_cut"), m.cut.phi_cut);
+  EXPECT_EQ(r.report.profile("film_thickness"), m.cut.thickness);
+  EXPECT_EQ(r.report.profile("flow_within_film_share"), m.cut.flow_within_share);
+  EXPECT_NE(r.report.text.find("phi >= 0.1"), std::string::npos) << r.report.text;
+  EXPECT_THROW(coupling::film_mapping("nonesuch"), std::invalid_argument);
+  EXPECT_THROW(r.report.figure("nonesuch"), std::out_of_range);
 }

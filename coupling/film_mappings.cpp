@@ -1,0 +1,40 @@
+#include "coupling/film_mappings.hpp"
+
+#include <stdexcept>
+
+#include "coupling/film_mapping.hpp"
+
+namespace centrec::coupling {
+
+double FilmMappingReport::figure(const std::string& name) const {
+  for (const Figure& f : figures)
+    if (f.name == name) return f.value;
+  throw std::out_of_range("film mapping report: no figure '" + name + "'");
+}
+
+const std::vector<double>& FilmMappingReport::profile(const std::string& name) const {
+  for (const Profile& p : profiles)
+    if (p.name == name) return p.values;
+  throw std::out_of_range("film mapping report: no profile '" + name + "'");
+}
+
+const std::vector<FilmMappingEntry>& film_mappings() {
+  static const std::vector<FilmMappingEntry> table = {
+      {"as_measured",
+       "the film as the DEM measured it: full-circumference profiles of the developed sections, cut where the solid "
+       "fraction falls below 0.1 (docs/coupling.md \"Film as measured\")",
+       map_film_as_measured},
+  };
+  return table;
+}
+
+const FilmMappingEntry& film_mapping(const std::string& name) {
+  std::string known;
+  for (const FilmMappingEntry& e : film_mappings()) {
+    if (e.name == name) return e;
+    known += (known.empty() ? "" : ", ") + std::string(e.name);
+  }
+  throw std::invalid_argument("no film mapping '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace centrec::coupling
