@@ -41,15 +41,6 @@ void allow_or_refuse(CoupledRun& r, const std::string& problem, bool allowed, co
   r.warnings.push_back(problem);
 }
 
-void check_same_particles(const CoupledRun& r) {
-  const auto& m = r.thermal.model.material;
-  const double d = r.dem.scene.particle.diameter, rho = r.dem.scene.particle.material.density;
-  if (std::abs(m.d / d - 1.0) > 1e-9 || std::abs(m.rho_s / rho - 1.0) > 1e-9)
-    throw std::invalid_argument("the thermal particles differ from the DEM's: thermal.material.d = " +
-                                std::to_string(m.d) + " m, rho_s = " + std::to_string(m.rho_s) +
-                                " kg/m3 but dem.particles.diameter = " + std::to_string(d) +
-                                " m, density = " + std::to_string(rho) + " kg/m3; make them equal");
-}
 }  // namespace
 
 config::Overrides run_overrides(const RunOptions& o) {
@@ -74,11 +65,11 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
   if (r.film_from_dem()) {
     if (!cf.dem) throw std::invalid_argument(cf.path + ": give a `dem:` section or `film: {file: ...}`");
     effective_dem(cf, o, r);
-    check_same_particles(r);
+    // The case reader's checks, on the DEM and receiver as they will run.
+    if (const auto p = config::coupled_run_problem(r.dem, r.thermal, r.has_receiver ? &r.receiver : nullptr))
+      throw std::invalid_argument(cf.path + ": " + p->key + ": " + p->message);
     allow_or_refuse(r, coupling::scale_down_validity(r.dem.scene.drum.diameter, r.dem.scene.particle.diameter),
                     o.allow_small_drum, "--allow-small-drum", cf.path);
-    if (!(r.dem.sampling.turns > 0.0))
-      throw std::invalid_argument(cf.path + ": dem.sampling.turns must be > 0: the coupling needs film fields");
     // 1. DEM, or its cached outputs.
     const auto t0 = std::chrono::steady_clock::now();
     // A DEM run now hands its film over in memory; a cached or given one is read back from
