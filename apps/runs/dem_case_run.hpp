@@ -18,10 +18,8 @@ namespace centrec::runs {
 using DemEngine = std::function<io::DemRunResult(const config::CaseFile& cf, const config::DemCase& dc,
                                                  const std::string& out_dir)>;
 
-// The native engine, from the checkpoint `ck` when given; writes out_dir/checkpoint.h5
-// every run.checkpoint_interval of wall time.
-io::DemRunResult run_dem_natively(const config::CaseFile& cf, const config::DemCase& dc, const std::string& out_dir,
-                                  const std::optional<io::RunCheckpoint>& ck = std::nullopt);
+// The native engine (runs/dem_run.hpp), from the checkpoint `ck` when given; writes
+// out_dir/checkpoint.h5 every run.checkpoint_interval of wall time.
 DemEngine native_engine(const std::optional<io::RunCheckpoint>& ck = std::nullopt);
 
 // Runs `engine`, writes out_dir/{summary.json, dem.h5, dem.xmf, mass_flow.csv}

@@ -115,6 +115,43 @@ TEST(InterruptResume, SigintCheckpointsAndTheResumedRunEqualsTheWholeOne) {
   std::filesystem::remove_all(dir);
 }
 
+namespace {
+// Starts `centrec dem CASE --out DIR --no-plots` and SIGKILLs it once a checkpoint inside its
+// first sampled turn exists (after `snapshots` of the turn's snapshots). False if the run
+// ended first.
+bool kill_inside_the_first_sampled_turn(const std::string& case_path, const std::string& dir, int snapshots) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    ::execl(CENTREC_BINARY, CENTREC_BINARY, "dem", case_path.c_str(), "--out", dir.c_str(), "--no-plots",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  bool inside = false;
+  for (int k = 0; k < 60000 && !inside; ++k) {
+    if (::waitpid(child, &status, WNOHANG) == child) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    try {
+      const auto ck = centrec::io::read_checkpoint(dir);
+      inside = ck.phase == "sampling" && ck.turn_snapshots >= snapshots;
+    } catch (const std::exception&) {
+    }
+  }
+  ::kill(child, SIGKILL);
+  ::waitpid(child, &status, 0);
+  return inside && WIFSIGNALED(status);
+}
+
+// The last progress line's "t = DONE of TOTAL s".
+bool last_progress(const std::string& err, double& done, double& total) {
+  const std::size_t at = err.rfind(" t = ");
+  return at != std::string::npos && std::sscanf(err.c_str() + at, " t = %lf of %lf s", &done, &total) == 2;
+}
+}  // namespace
+
 TEST(InterruptResume, SigkillInsideASampledTurnResumesFromThatTurnBitwise) {
   // One long sampled turn of 8 snapshots, a checkpoint at every safe point.
   std::string text = centrec::testing::kResumeCase;
@@ -127,30 +164,8 @@ TEST(InterruptResume, SigkillInsideASampledTurnResumesFromThatTurnBitwise) {
   ASSERT_EQ(w.exit_code, 0) << w.err;
 
   // SIGKILL once a checkpoint inside the turn exists (after its 3rd snapshot).
-  const pid_t child = ::fork();
-  if (child == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::dup2(null, 2);
-    ::execl(CENTREC_BINARY, CENTREC_BINARY, "dem", case_path.c_str(), "--out", killed.c_str(), "--no-plots",
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  int status = 0;
-  bool inside = false;
-  for (int k = 0; k < 60000 && !inside; ++k) {
-    if (::waitpid(child, &status, WNOHANG) == child) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    try {
-      const auto ck = centrec::io::read_checkpoint(killed);
-      inside = ck.phase == "sampling" && ck.turn_snapshots >= 3;
-    } catch (const std::exception&) {
-    }
-  }
-  ::kill(child, SIGKILL);
-  ::waitpid(child, &status, 0);
-  ASSERT_TRUE(inside) << "no checkpoint inside the sampled turn before the run ended";
-  ASSERT_TRUE(WIFSIGNALED(status));
+  ASSERT_TRUE(kill_inside_the_first_sampled_turn(case_path, killed, 3))
+      << "no checkpoint inside the sampled turn before the run ended";
   const auto ck = centrec::io::read_checkpoint(killed);
   const double period = 60.0 / 320.16, t_turn_end = dataset(whole, "/mass_flow/time").back();
   const double t_ck = ck.scene.engine.time;
@@ -211,5 +226,32 @@ TEST(InterruptResume, SigintDuringTheDemOfARunAndTheSameCommandAgainEqualsTheWho
   const auto tb = centrec::io::H5File::open_read(dir + "/stopped/results.h5").read("/steady/T");
   ASSERT_EQ(ta.size(), tb.size());
   EXPECT_EQ(std::memcmp(ta.data(), tb.data(), ta.size() * sizeof(double)), 0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(InterruptResume, AResumedSamplingPhaseCountsItsProgressToTheRunsEnd) {
+  // A spin-up extended past run.duration (a flow never steady to 1e-6), then one sampled
+  // turn of 8 snapshots: the sampling starts later than run.duration.
+  std::string text = centrec::testing::kResumeCase;
+  const std::string two_turns = "turns: 2, snapshots_per_turn: 4";
+  text.replace(text.find(two_turns), two_turns.size(), "turns: 1, snapshots_per_turn: 8");
+  text.replace(text.find("progress_interval: 1000"), 23,
+               "progress_interval: 1000, steady_tolerance: 1.0e-6, max_extension: 0.02");
+  const std::string dir = centrec::testing::fresh_dir("resume_progress");
+  const std::string case_path = centrec::testing::write_case(dir, text);
+  const std::string killed = dir + "/killed";
+  ASSERT_TRUE(kill_inside_the_first_sampled_turn(case_path, killed, 3)) << "no checkpoint inside the sampled turn";
+  const double t_ck = centrec::io::read_checkpoint(killed).scene.engine.time;
+  EXPECT_GT(t_ck, 0.06 - 1e-9);  // sampling began after the extension
+
+  const BinaryRun r = run_binary({"dem", "--resume", killed, "--no-plots"}, 300.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  double done = 0.0, total = 0.0;
+  ASSERT_TRUE(last_progress(r.err, done, total)) << r.err;
+  const double t_end = dataset(killed, "/mass_flow/time").back();
+  std::printf("resumed at t = %.5f s; last progress line: t = %.4f of %.4f s; the run ended at %.5f s\n", t_ck, done,
+              total, t_end);
+  EXPECT_NEAR(done, t_end, 1e-3);
+  EXPECT_NEAR(total, t_end, 1e-3) << r.err;
   std::filesystem::remove_all(dir);
 }
