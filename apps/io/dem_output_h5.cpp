@@ -11,110 +11,185 @@ namespace centrec::io {
 
 namespace {
 
-void write_mass_flow(H5File& f, const std::vector<dem::scene::MassFlowSample>& log) {
+using dem::scene::FilmFields;
+using dem::scene::MassFlowSample;
+
+// The schema of /mass_flow and /film: each dataset once, with its unit, its dimension scale
+// and how it is taken from the run and read back into it. A row without `set` is an output
+// only (a cached run's coupling does not use it).
+
+// /mass_flow: one column per sample record field, over /mass_flow/time.
+struct FlowColumn {
+  const char* name;
+  const char* units;
+  double (*get)(const MassFlowSample&);
+  void (*set)(MassFlowSample&, double);
+};
+const FlowColumn kFlowColumns[] = {
+    {"time", "s", [](const MassFlowSample& s) { return s.time; }, [](MassFlowSample& s, double v) { s.time = v; }},
+    {"fed", "kg", [](const MassFlowSample& s) { return s.fed; }, [](MassFlowSample& s, double v) { s.fed = v; }},
+    {"out", "kg", [](const MassFlowSample& s) { return s.out; }, [](MassFlowSample& s, double v) { s.out = v; }},
+    {"lost", "kg", [](const MassFlowSample& s) { return s.lost; }, [](MassFlowSample& s, double v) { s.lost = v; }},
+    {"holdup", "kg", [](const MassFlowSample& s) { return s.holdup; },
+     [](MassFlowSample& s, double v) { s.holdup = v; }},
+    {"particles", "1", [](const MassFlowSample& s) { return static_cast<double>(s.particles); },
+     [](MassFlowSample& s, double v) { s.particles = static_cast<std::int64_t>(v); }},
+    {"slice_axial_flow", "kg/s", [](const MassFlowSample& s) { return s.axial_flow; },
+     [](MassFlowSample& s, double v) { s.axial_flow = v; }},
+};
+
+// One field of a vector of records, as a dataset column.
+template <class T>
+std::vector<double> each(const std::vector<T>& v, double T::*m) {
+  std::vector<double> x;
+  for (const T& e : v) x.push_back(e.*m);
+  return x;
+}
+// The column `x` into a vector of records: sized by the first column read, the others must match.
+template <class T>
+void fill(std::vector<T>& v, const std::vector<double>& x, double T::*m) {
+  if (v.empty()) v.resize(x.size());
+  if (v.size() != x.size()) throw std::runtime_error("differs in length from the other columns of its records");
+  for (std::size_t k = 0; k < x.size(); ++k) v[k].*m = x[k];
+}
+
+// /film 1D datasets; `scale` is the /film dataset of their axis ("" = none).
+struct FilmColumn {
+  const char* name;
+  const char* units;
+  const char* scale;
+  const char* scale_label;
+  std::vector<double> (*get)(const FilmFields&);
+  void (*set)(FilmFields&, const std::vector<double>&);
+};
+const FilmColumn kFilmColumns[] = {
+    {"section_z", "m", "", "", [](const FilmFields& f) { return f.section_z; },
+     [](FilmFields& f, const std::vector<double>& x) { f.section_z = x; }},
+    {"thickness_mean", "m", "section_z", "z",
+     [](const FilmFields& f) { return each(f.section_thickness, &film::LengthStat::mean_m); },
+     [](FilmFields& f, const std::vector<double>& x) { fill(f.section_thickness, x, &film::LengthStat::mean_m); }},
+    {"thickness_std", "m", "section_z", "z",
+     [](const FilmFields& f) { return each(f.section_thickness, &film::LengthStat::std_m); },
+     [](FilmFields& f, const std::vector<double>& x) { fill(f.section_thickness, x, &film::LengthStat::std_m); }},
+    {"bin_theta", "rad", "", "", [](const FilmFields& f) { return f.bin_theta; },
+     [](FilmFields& f, const std::vector<double>& x) { f.bin_theta = x; }},
+    {"surface_axial_velocity", "m/s", "bin_theta", "theta", [](const FilmFields& f) { return f.surface_velocity; },
+     [](FilmFields& f, const std::vector<double>& x) { f.surface_velocity = x; }},
+    {"moving_zone_of_bin", "1", "bin_theta", "theta",
+     [](const FilmFields& f) { return std::vector<double>(f.zones.zone_of_bin.begin(), f.zones.zone_of_bin.end()); },
+     [](FilmFields& f, const std::vector<double>& x) {
+       f.zones.zone_of_bin.clear();
+       for (double z : x) f.zones.zone_of_bin.push_back(z > 0.5 ? 1 : 0);
+     }},
+    {"arc_theta", "rad", "", "", [](const FilmFields& f) { return each(f.arcs, &film::ArcSection::theta); }, nullptr},
+    {"arc_z_over_length", "1", "", "",
+     [](const FilmFields& f) { return each(f.arcs, &film::ArcSection::z_over_length); }, nullptr},
+    {"wall_distance_d", "d", "", "", [](const FilmFields& f) { return f.bin_centre_d; },
+     [](FilmFields& f, const std::vector<double>& x) { f.bin_centre_d = x; }},
+    {"dispersion", "m2/s", "wall_distance_d", "wall distance",
+     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::coefficient); },
+     [](FilmFields& f, const std::vector<double>& x) { fill(f.dispersion, x, &film::DispersionBin::coefficient); }},
+    {"dispersion_std", "m2/s", "wall_distance_d", "wall distance",
+     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::coefficient_std); },
+     [](FilmFields& f, const std::vector<double>& x) { fill(f.dispersion, x, &film::DispersionBin::coefficient_std); }},
+    {"dispersion_drift", "m/s", "wall_distance_d", "wall distance",
+     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::drift); }, nullptr},
+    {"dispersion_fit_lag_min", "s", "wall_distance_d", "wall distance",
+     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::fit_lag_min); }, nullptr},
+    {"dispersion_fit_lag_max", "s", "wall_distance_d", "wall distance",
+     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::fit_lag_max); }, nullptr},
+    {"dispersion_crossing_time", "s", "wall_distance_d", "wall distance",
+     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::crossing_time); }, nullptr},
+    {"dispersion_lags", "s", "", "", [](const FilmFields& f) { return f.dispersion_lags; }, nullptr},
+    {"ring_z", "m", "", "", [](const FilmFields& f) { return f.ring_z; },
+     [](FilmFields& f, const std::vector<double>& x) { f.ring_z = x; }},
+};
+
+// /film profiles [rows][wall-distance bins] as <name>_mean, _std (units) and _turns (the
+// periods per bin), over /film/wall_distance_d; rows over the row scales given.
+struct FilmProfile {
+  const char* name;
+  const char* units;
+  std::vector<std::vector<film::ProfileBin>> FilmFields::*member;
+  const char* row_scales[2][2];  // {dataset, label}, up to two ("" = none)
+  bool read;
+};
+const FilmProfile kFilmProfiles[] = {
+    {"axial_velocity", "m/s", &FilmFields::velocity_profiles, {{"arc_theta", "arc theta"}, {"arc_z_over_length", "arc z/L"}}, false},
+    {"solid_fraction", "1", &FilmFields::solid_fraction, {{"", ""}, {"", ""}}, false},
+    {"ring_solid_fraction", "1", &FilmFields::ring_solid_fraction, {{"ring_z", "z"}, {"", ""}}, true},
+    {"ring_volume_flux", "m/s", &FilmFields::ring_volume_flux, {{"ring_z", "z"}, {"", ""}}, true},
+};
+
+// /film number attributes.
+struct FilmNumber {
+  const char* name;
+  double (*get)(const FilmFields&);
+  void (*set)(FilmFields&, double);
+};
+const FilmNumber kFilmNumbers[] = {
+    {"sampled_turns", [](const FilmFields& f) { return static_cast<double>(f.turns); },
+     [](FilmFields& f, double v) { f.turns = static_cast<std::size_t>(v); }},
+    {"snapshots", [](const FilmFields& f) { return static_cast<double>(f.snapshots); },
+     [](FilmFields& f, double v) { f.snapshots = static_cast<std::size_t>(v); }},
+    {"mean_thickness_m", [](const FilmFields& f) { return f.mean_thickness.mean_m; }, nullptr},
+    {"mean_thickness_std_m", [](const FilmFields& f) { return f.mean_thickness.std_m; }, nullptr},
+};
+
+const char* const kProfileParts[] = {"_mean", "_std", "_turns"};
+
+void write_mass_flow(H5File& f, const std::vector<MassFlowSample>& log) {
   f.create_group("/mass_flow");
-  std::vector<double> t, fed, out, lost, hold, n, axial;
-  for (const auto& s : log) {
-    axial.push_back(s.axial_flow);
-    t.push_back(s.time);
-    fed.push_back(s.fed);
-    out.push_back(s.out);
-    lost.push_back(s.lost);
-    hold.push_back(s.holdup);
-    n.push_back(static_cast<double>(s.particles));
+  for (const FlowColumn& c : kFlowColumns) {
+    std::vector<double> x;
+    for (const MassFlowSample& s : log) x.push_back(c.get(s));
+    f.write(std::string("/mass_flow/") + c.name, x, c.units);
   }
-  f.write("/mass_flow/time", t, "s");
-  f.write("/mass_flow/fed", fed, "kg");
-  f.write("/mass_flow/out", out, "kg");
-  f.write("/mass_flow/lost", lost, "kg");
-  f.write("/mass_flow/holdup", hold, "kg");
-  f.write("/mass_flow/particles", n, "1");
-  f.write("/mass_flow/slice_axial_flow", axial, "kg/s");
   f.set_attribute("/mass_flow", "description",
                   "cumulative since t = 0: fed, out (through the outlet), lost (escaped elsewhere); holdup and "
                   "particles: free particles in the drum; rates are differences over time");
-  for (const char* name : {"fed", "out", "lost", "holdup", "particles", "slice_axial_flow"})
-    f.attach_scale(std::string("/mass_flow/") + name, 0, "/mass_flow/time", "time");
+  for (const FlowColumn& c : kFlowColumns)
+    if (std::string(c.name) != "time") f.attach_scale(std::string("/mass_flow/") + c.name, 0, "/mass_flow/time", "time");
 }
 
 // [rows][bins] profile bins -> mean, std and period-count matrices.
-void write_profiles(H5File& f, const std::string& path, const std::vector<std::vector<film::ProfileBin>>& p,
-                    const std::string& units) {
-  if (p.empty()) return;
-  const std::size_t rows = p.size(), cols = p[0].size();
+void write_profile(H5File& f, const FilmProfile& p, const std::vector<std::vector<film::ProfileBin>>& rows) {
+  if (rows.empty()) return;
+  const std::string path = std::string("/film/") + p.name;
+  const std::size_t n = rows.size(), cols = rows[0].size();
   std::vector<double> mean, sd, periods;
-  for (const auto& row : p)
+  for (const auto& row : rows)
     for (const auto& b : row) {
       mean.push_back(b.mean);
       sd.push_back(b.stddev);
       periods.push_back(static_cast<double>(b.periods));
     }
-  f.write(path + "_mean", mean, {rows, cols}, units);
-  f.write(path + "_std", sd, {rows, cols}, units);
-  f.write(path + "_turns", periods, {rows, cols}, "1");
-  for (const char* part : {"_mean", "_std", "_turns"}) f.attach_scale(path + part, 1, "/film/wall_distance_d", "wall distance");
+  f.write(path + "_mean", mean, {n, cols}, p.units);
+  f.write(path + "_std", sd, {n, cols}, p.units);
+  f.write(path + "_turns", periods, {n, cols}, "1");
 }
 
-void write_film(H5File& f, const dem::scene::FilmFields& ff) {
+void write_film(H5File& f, const FilmFields& ff) {
   if (ff.snapshots == 0) return;
   f.create_group("/film");
-  f.set_attribute("/film", "sampled_turns", static_cast<double>(ff.turns));
-  f.set_attribute("/film", "snapshots", static_cast<double>(ff.snapshots));
+  for (const FilmNumber& a : kFilmNumbers) f.set_attribute("/film", a.name, a.get(ff));
   f.set_attribute("/film", "theta_convention",
                   "theta increases against the drum rotation; 90 deg = top (opposite gravity's transverse part)");
-  f.set_attribute("/film", "mean_thickness_m", ff.mean_thickness.mean_m);
-  f.set_attribute("/film", "mean_thickness_std_m", ff.mean_thickness.std_m);
-  std::vector<double> tm, ts;
-  for (const auto& s : ff.section_thickness) {
-    tm.push_back(s.mean_m);
-    ts.push_back(s.std_m);
-  }
-  f.write("/film/section_z", ff.section_z, "m");
-  f.write("/film/thickness_mean", tm, "m");
-  f.write("/film/thickness_std", ts, "m");
-  f.write("/film/bin_theta", ff.bin_theta, "rad");
-  f.write("/film/surface_axial_velocity", ff.surface_velocity, "m/s");
-  std::vector<double> moving(ff.zones.zone_of_bin.begin(), ff.zones.zone_of_bin.end());
-  f.write("/film/moving_zone_of_bin", moving, "1");
-  std::vector<double> arc_theta, arc_z;
-  for (const auto& a : ff.arcs) {
-    arc_theta.push_back(a.theta);
-    arc_z.push_back(a.z_over_length);
-  }
-  f.write("/film/arc_theta", arc_theta, "rad");
-  f.write("/film/arc_z_over_length", arc_z, "1");
-  f.write("/film/wall_distance_d", ff.bin_centre_d, "d");
-  write_profiles(f, "/film/axial_velocity", ff.velocity_profiles, "m/s");
-  write_profiles(f, "/film/solid_fraction", ff.solid_fraction, "1");
+  for (const FilmColumn& c : kFilmColumns) f.write(std::string("/film/") + c.name, c.get(ff), c.units);
+  for (const FilmProfile& p : kFilmProfiles) write_profile(f, p, ff.*p.member);
   f.set_attribute("/film/solid_fraction_mean", "rows", "0 = stationary zone, 1 = moving zone");
   // Dispersion: D from the slope of the MSD (docs/film_sampling.md "Wall-normal dispersion"),
   // with the lags and the axial window it used.
-  std::vector<double> dc, ds, dd, lo, hi, tx, msd, msd_n;
+  std::vector<double> msd, msd_n;
   for (const auto& b : ff.dispersion) {
-    dc.push_back(b.coefficient);
-    ds.push_back(b.coefficient_std);
-    dd.push_back(b.drift);
-    lo.push_back(b.fit_lag_min);
-    hi.push_back(b.fit_lag_max);
-    tx.push_back(b.crossing_time);
     msd.insert(msd.end(), b.msd.begin(), b.msd.end());
     for (std::size_t n : b.msd_samples) msd_n.push_back(static_cast<double>(n));
   }
-  f.write("/film/dispersion", dc, "m2/s");
-  f.write("/film/dispersion_std", ds, "m2/s");
-  f.write("/film/dispersion_drift", dd, "m/s");
-  f.write("/film/dispersion_fit_lag_min", lo, "s");
-  f.write("/film/dispersion_fit_lag_max", hi, "s");
-  f.write("/film/dispersion_crossing_time", tx, "s");
-  f.write("/film/dispersion_lags", ff.dispersion_lags, "s");
   const std::size_t nlag = ff.dispersion_lags.size();
-  if (!ff.dispersion.empty() && nlag > 0 && msd.size() == ff.dispersion.size() * nlag) {
+  const bool with_msd = !ff.dispersion.empty() && nlag > 0 && msd.size() == ff.dispersion.size() * nlag;
+  if (with_msd) {
     f.write("/film/dispersion_msd", msd, {ff.dispersion.size(), nlag}, "m2");
     f.write("/film/dispersion_msd_samples", msd_n, {ff.dispersion.size(), nlag}, "1");
-    for (const char* name : {"dispersion_msd", "dispersion_msd_samples"}) {
-      f.attach_scale(std::string("/film/") + name, 0, "/film/wall_distance_d", "wall distance");
-      f.attach_scale(std::string("/film/") + name, 1, "/film/dispersion_lags", "lag");
-    }
   }
   f.set_attribute("/film/dispersion", "method",
                   "wall-normal self-diffusion: half the slope of MSD(lag) = 2 D lag + c (variance of the radial "
@@ -127,28 +202,43 @@ void write_film(H5File& f, const dem::scene::FilmFields& ff) {
   f.set_attribute("/film/dispersion_lags", "series",
                   "the fine series (position samples inside each snapshot interval, dem.sampling.dispersion_spacing "
                   "apart) then the coarse series (the snapshots, within a turn); 0 = a series without data");
-  f.write("/film/ring_z", ff.ring_z, "m");
-  write_profiles(f, "/film/ring_solid_fraction", ff.ring_solid_fraction, "1");
-  write_profiles(f, "/film/ring_volume_flux", ff.ring_volume_flux, "m/s");
   f.set_attribute("/film/ring_volume_flux_mean", "meaning",
                   "phi * u over the whole circumference per axial section (rows) and wall-distance bin; "
                   "axial mass flow of a section = rho_s * sum over bins of this * shell area");
-  for (const char* name : {"thickness_mean", "thickness_std"})
-    f.attach_scale(std::string("/film/") + name, 0, "/film/section_z", "z");
-  for (const char* name : {"surface_axial_velocity", "moving_zone_of_bin"})
-    f.attach_scale(std::string("/film/") + name, 0, "/film/bin_theta", "theta");
-  for (const char* name : {"dispersion", "dispersion_std", "dispersion_drift", "dispersion_fit_lag_min",
-                           "dispersion_fit_lag_max", "dispersion_crossing_time"})
-    f.attach_scale(std::string("/film/") + name, 0, "/film/wall_distance_d", "wall distance");
-  for (const char* name : {"axial_velocity_mean", "axial_velocity_std", "axial_velocity_turns"}) {
-    f.attach_scale(std::string("/film/") + name, 0, "/film/arc_theta", "arc theta");
-    f.attach_scale(std::string("/film/") + name, 0, "/film/arc_z_over_length", "arc z/L");
+  // The dimension scales.
+  for (const FilmColumn& c : kFilmColumns)
+    if (*c.scale) f.attach_scale(std::string("/film/") + c.name, 0, std::string("/film/") + c.scale, c.scale_label);
+  for (const FilmProfile& p : kFilmProfiles) {
+    if ((ff.*p.member).empty()) continue;
+    for (const char* part : kProfileParts) {
+      const std::string path = std::string("/film/") + p.name + part;
+      for (const auto& rs : p.row_scales)
+        if (*rs[0]) f.attach_scale(path, 0, std::string("/film/") + rs[0], rs[1]);
+      f.attach_scale(path, 1, "/film/wall_distance_d", "wall distance");
+    }
   }
-  for (const char* name : {"ring_solid_fraction_mean", "ring_solid_fraction_std", "ring_solid_fraction_turns",
-                           "ring_volume_flux_mean", "ring_volume_flux_std", "ring_volume_flux_turns"}) {
-    f.attach_scale(std::string("/film/") + name, 0, "/film/ring_z", "z");
-    f.attach_scale(std::string("/film/") + name, 1, "/film/wall_distance_d", "wall distance");
-  }
+  if (with_msd)
+    for (const char* name : {"dispersion_msd", "dispersion_msd_samples"}) {
+      f.attach_scale(std::string("/film/") + name, 0, "/film/wall_distance_d", "wall distance");
+      f.attach_scale(std::string("/film/") + name, 1, "/film/dispersion_lags", "lag");
+    }
+}
+
+// [rows][bins] profile bins from the _mean, _std and _turns datasets of a profile.
+std::vector<std::vector<film::ProfileBin>> read_profile(const H5File& f, const std::string& path) {
+  std::vector<std::size_t> dims, sd_dims;
+  const std::vector<double> mean = f.read(path + "_mean", &dims), sd = f.read(path + "_std", &sd_dims);
+  if (dims.size() != 2 || sd_dims != dims) throw std::runtime_error(path + "_mean and _std must be 2D of one shape");
+  const std::vector<double> turns = f.read(path + "_turns");
+  if (turns.size() != mean.size()) throw std::runtime_error(path + "_turns differs in shape");
+  std::vector<std::vector<film::ProfileBin>> p(dims[0], std::vector<film::ProfileBin>(dims[1]));
+  for (std::size_t r = 0, k = 0; r < dims[0]; ++r)
+    for (std::size_t c = 0; c < dims[1]; ++c, ++k) {
+      p[r][c].mean = mean[k];
+      p[r][c].stddev = sd[k];
+      p[r][c].periods = static_cast<std::size_t>(turns[k]);
+    }
+  return p;
 }
 
 // One snapshot: the free particles, then the glued layer (glued = 1).
@@ -252,22 +342,33 @@ std::string particles_xdmf(const std::vector<NamedSnapshot>& snaps) {
 }  // namespace
 
 std::vector<dem::scene::MassFlowSample> read_mass_flow_log(const H5File& f) {
-  const std::vector<double> t = f.read("/mass_flow/time"), fed = f.read("/mass_flow/fed"), out = f.read("/mass_flow/out");
-  if (fed.size() != t.size() || out.size() != t.size()) throw std::runtime_error("/mass_flow: time, fed and out differ in length");
-  const std::vector<double> hold = f.read("/mass_flow/holdup"), n = f.read("/mass_flow/particles"),
-                            axial = f.read("/mass_flow/slice_axial_flow");
-  if (hold.size() != t.size() || n.size() != t.size() || axial.size() != t.size())
-    throw std::runtime_error("/mass_flow: holdup, particles and slice_axial_flow differ in length from time");
-  std::vector<dem::scene::MassFlowSample> log(t.size());
-  for (std::size_t k = 0; k < t.size(); ++k) {
-    log[k].time = t[k];
-    log[k].fed = fed[k];
-    log[k].out = out[k];
-    log[k].holdup = hold[k];
-    log[k].particles = static_cast<std::int64_t>(n[k]);
-    log[k].axial_flow = axial[k];
+  std::vector<MassFlowSample> log;
+  for (const FlowColumn& c : kFlowColumns) {
+    const std::vector<double> x = f.read(std::string("/mass_flow/") + c.name);
+    if (log.empty()) log.resize(x.size());
+    if (x.size() != log.size()) throw std::runtime_error(std::string("/mass_flow/") + c.name + " differs in length from time");
+    for (std::size_t k = 0; k < x.size(); ++k) c.set(log[k], x[k]);
   }
   return log;
+}
+
+dem::scene::FilmFields read_film_fields(const H5File& f) {
+  FilmFields ff;
+  for (const FilmNumber& a : kFilmNumbers)
+    if (a.set) a.set(ff, f.number_attribute("/film", a.name));
+  for (const FilmColumn& c : kFilmColumns)
+    if (c.set) {
+      const std::string path = std::string("/film/") + c.name;
+      const std::vector<double> x = f.read(path);
+      try {
+        c.set(ff, x);
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error(path + ": " + e.what());
+      }
+    }
+  for (const FilmProfile& p : kFilmProfiles)
+    if (p.read) ff.*p.member = read_profile(f, std::string("/film/") + p.name);
+  return ff;
 }
 
 void write_dem_h5(const std::string& dir, const Provenance& provenance, const dem::scene::SceneConfig& scene,

@@ -1,7 +1,9 @@
 #pragma once
 // DIR/dem.h5 of a DEM run (docs/outputs.md) and its XDMF sidecars DIR/dem.xmf (the particle
 // snapshots) and DIR/drum.xmf (the drum surface) for ParaView. Units are attributes of every
-// dataset; 1D axes are HDF5 dimension scales of the datasets over them.
+// dataset; 1D axes are HDF5 dimension scales of the datasets over them. /mass_flow and
+// /film are written from one schema list each (name, unit, scale, reader) and read back
+// from the same lists.
 //
 // Layout:
 //   /mass_flow/{time, fed, out, lost, holdup, particles}   cumulative masses vs time
@@ -23,7 +25,10 @@ namespace centrec::io {
 void write_dem_h5(const std::string& dir, const Provenance& provenance, const dem::scene::SceneConfig& scene,
                   const DemRunResult& run);
 
-// /mass_flow of an open dem.h5 (time, fed and out; the rest stays zero).
+// Read back from an open dem.h5 by the same schema lists that write it: /mass_flow whole,
+// and of /film what the coupling uses (dem/scene/scene_sampler.hpp FilmFields; the rest
+// stays empty). Throw std::runtime_error naming the missing or inconsistent dataset.
 std::vector<dem::scene::MassFlowSample> read_mass_flow_log(const H5File& f);
+dem::scene::FilmFields read_film_fields(const H5File& f);
 
 }  // namespace centrec::io
