@@ -7,16 +7,74 @@
 
 namespace centrec::cli {
 
-std::string flags_text(const config::Overrides& o) {
+namespace {
+// A value as flags_text writes it (ten significant digits).
+template <class T>
+std::string text(const T& v) {
   std::ostringstream s;
   s.precision(10);
-  auto flag = [&](const char* name, auto value) { s << (s.tellp() > 0 ? " " : "") << name << ' ' << value; };
-  if (o.threads) flag("--threads", *o.threads);
-  if (o.duration) flag("--duration", *o.duration);
-  if (o.speed_rpm) flag("--speed-rpm", *o.speed_rpm);
-  if (o.mass_flow) flag("--mass-flow", *o.mass_flow);
-  if (o.seed) flag("--seed", *o.seed);
+  s << v;
   return s.str();
+}
+
+struct Flag {
+  OverrideFlag which;
+  const char* name;
+  const char* value;  // the value's name in the usage
+  const char* help;
+  CLI::Option* (*add)(CommandLine& app, config::Overrides& o, const char* name, const char* help);
+  std::string (*given)(const config::Overrides& o);  // the value as given, "" = not given
+};
+
+// The ranges of run.threads, run.duration, receiver.speed_rpm, receiver.mass_flow and dem.seed
+// (config/case_dem.cpp, config/case_receiver.cpp); the case checks then see the value as the
+// case's own.
+const Flag kFlags[] = {
+    {OverrideFlag::threads, "--threads", "N", "DEM threads (0-1024, 0 = all cores) instead of dem.run.threads",
+     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
+       return app.add_option_function<int>(n, [&o](const int& v) { o.threads = v; }, h)->check(integer_in(0, 1024));
+     },
+     [](const config::Overrides& o) { return o.threads ? text(*o.threads) : std::string(); }},
+    {OverrideFlag::duration, "--duration", "SECONDS", "seconds of spin-up instead of dem.run.duration",
+     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
+       return app.add_option_function<double>(n, [&o](const double& v) { o.duration = v; }, h)
+           ->check(number_in(config::Range::positive(), "s"));
+     },
+     [](const config::Overrides& o) { return o.duration ? text(*o.duration) : std::string(); }},
+    {OverrideFlag::speed_rpm, "--speed-rpm", "RPM", "the receiver's speed (or, without one, the DEM drum's), rpm",
+     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
+       return app.add_option_function<double>(n, [&o](const double& v) { o.speed_rpm = v; }, h)
+           ->check(number_in(config::Range::open_closed(0.0, 1e5), "rpm"));
+     },
+     [](const config::Overrides& o) { return o.speed_rpm ? text(*o.speed_rpm) : std::string(); }},
+    {OverrideFlag::mass_flow, "--mass-flow", "KG_S", "the receiver's mass flow (or, without one, the DEM feeder's), kg/s",
+     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
+       return app.add_option_function<double>(n, [&o](const double& v) { o.mass_flow = v; }, h)
+           ->check(number_in(config::Range::open_closed(0.0, 1e4), "kg/s"));
+     },
+     [](const config::Overrides& o) { return o.mass_flow ? text(*o.mass_flow) : std::string(); }},
+    {OverrideFlag::seed, "--seed", "N", "the DEM's random seed instead of dem.seed (a replica of the same case)",
+     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
+       return app.add_option_function<long long>(n, [&o](const long long& v) { o.seed = static_cast<std::uint64_t>(v); }, h)
+           ->check(integer_in(0, 2147483647));
+     },
+     [](const config::Overrides& o) { return o.seed ? text(*o.seed) : std::string(); }},
+};
+}  // namespace
+
+void add_override_flags(CommandLine& app, config::Overrides& o, std::initializer_list<OverrideFlag> which) {
+  for (const OverrideFlag w : which)
+    for (const Flag& f : kFlags)
+      if (f.which == w) f.add(app, o, f.name, f.help)->option_text(f.value);
+}
+
+std::string flags_text(const config::Overrides& o) {
+  std::string s;
+  for (const Flag& f : kFlags) {
+    const std::string v = f.given(o);
+    if (!v.empty()) s += (s.empty() ? "" : " ") + std::string(f.name) + " " + v;
+  }
+  return s;
 }
 
 config::CaseFile checked_overrides(const config::CaseFile& cf, const config::Overrides& o) {

@@ -2,9 +2,19 @@
 // Command-line values that replace a case's (--threads, --duration, --speed-rpm,
 // --mass-flow) pass the same checks as the case file's values (config/case_checks), before
 // any work; a refusal names the flags.
+#include <initializer_list>
+
+#include "cli/command_line.hpp"
 #include "config/case_file.hpp"
 
 namespace centrec::cli {
+
+// The flags that replace a case value, each declared once (name, help, range, the
+// config::Overrides member it sets) in case_overrides.cpp.
+enum class OverrideFlag { threads, duration, speed_rpm, mass_flow, seed };
+
+// Declares `which` on `app`, each setting its member of `o` when given.
+void add_override_flags(CommandLine& app, config::Overrides& o, std::initializer_list<OverrideFlag> which);
 
 // "--threads 2 --duration 0.1": the overrides as they were given.
 std::string flags_text(const config::Overrides& o);

@@ -29,12 +29,10 @@ struct DemOptions {
   DemEngineOptions engine;
 };
 
-void print_dem_help() {
+void print_dem_help(const CommandLine& app) {
+  std::printf("usage: centrec dem CASE.yaml [options]\n       centrec dem --resume DIR [--threads N]\n\n%s\n",
+              app.options_text().c_str());
   std::printf(
-      "usage: centrec dem CASE.yaml [--out DIR] [--threads N] [--duration SECONDS]\n"
-      "                  [--engine centrec|liggghts] [--ranks N] [--mpirun CMD] [--liggghts EXE]\n"
-      "                  [--wall-rolling-model relative|liggghts] [--no-plots]\n"
-      "       centrec dem --resume DIR [--threads N]\n\n"
       "Runs the DEM of the CentRec drum (or periodic slice) described by the case's\n"
       "`dem:` section (the drum `receiver:` derives when it gives dem_diameter_d, as `centrec\n"
       "run` does) and writes DIR/summary.json (headline figures and the resolved\n"
@@ -43,13 +41,10 @@ void print_dem_help() {
       "and the paper's figures (apps/plot_dem.py): fig2_mass_flow.png (outlet flow vs time),\n"
       "fig3_film_thickness.png (thickness along z), fig6_velocity_profiles.png (the nine\n"
       "profiles) and solid_fraction.png (--no-plots: none).\n"
-            "units as attributes), DIR/dem.xmf (open in ParaView) and DIR/mass_flow.csv.\n"
-      "--threads (0-1024, 0 = all cores) and --duration (s) override run.threads and\n"
-      "run.duration; the resolved configuration in the outputs and the checkpoint holds them.\n"
+      "--threads and --duration enter the resolved configuration in the outputs and the checkpoint.\n"
       "--engine liggghts runs the same case on LIGGGHTS 3.8 (`mpirun -np N liggghts`, N = --ranks;\n"
       "--mpirun srun for a cluster launcher) in DIR/liggghts and reads its dumps into the same\n"
-      "samplers and outputs; settings LIGGGHTS cannot express are refused (see export-liggghts).\n"
-      "--wall-rolling-model overrides contacts.wall_rolling_model (liggghts: LIGGGHTS' form).\n\n"
+      "samplers and outputs; settings LIGGGHTS cannot express are refused (see export-liggghts).\n\n"
       "Every run.checkpoint_interval seconds of wall time (default 300; 0 = off) and at the\n"
       "end the run writes DIR/checkpoint.h5 (atomically); Ctrl-C or SIGTERM writes one at the\n"
       "next safe point (the end of a spin-up chunk or of a sampled turn) and stops (a second\n"
@@ -59,21 +54,19 @@ void print_dem_help() {
       "sampled again from its start.\n");
 }
 
-DemOptions parse(const Args& args) {
-  DemOptions o;
-  int threads = 0;
-  double duration = 0.0;
-  CommandLine app("dem");
+// Declares the options of `centrec dem` on `app`, each bound to its member of `o`.
+void declare(CommandLine& app, DemOptions& o) {
   app.add_option("CASE", o.case_path);
-  app.add_option("--out", o.out_dir);
-  app.add_option("--resume", o.resume_dir);
-  CLI::Option* t = app.add_option("--threads", threads)->check(integer_in(0, 1024));
-  CLI::Option* d = app.add_option("--duration", duration)->check(number_in(config::Range::positive(), "s"));
-  app.add_flag("--no-plots", o.no_plots);
+  app.add_option("--out", o.out_dir, "the run's folder (default out/dem)")->option_text("DIR");
+  app.add_option("--resume", o.resume_dir, "continue the stopped or killed run in DIR from its checkpoint")
+      ->option_text("DIR");
+  add_override_flags(app, o.overrides, {OverrideFlag::threads, OverrideFlag::duration});
+  app.add_flag("--no-plots", o.no_plots, "draw no figures");
   add_engine_options(app, o.engine);
-  app.read(args);
-  if (t->count()) o.overrides.threads = threads;
-  if (d->count()) o.overrides.duration = duration;
+}
+
+// Checks what `declare` read; throws UsageError.
+void check(DemOptions& o) {
   if (!o.resume_dir.empty()) {
     if (o.engine.engine != "centrec") throw UsageError("--resume is for the native engine (centrec) only");
     if (o.overrides.duration)
@@ -82,17 +75,21 @@ DemOptions parse(const Args& args) {
     o.out_dir = o.resume_dir;
   }
   if (o.case_path.empty() && o.resume_dir.empty()) throw UsageError("no case file given (centrec dem --help)");
-  return o;
 }
 
 }  // namespace
 
 int cmd_dem(const Args& args) {
+  DemOptions o;
+  CommandLine app("dem");
+  declare(app, o);
   if (wants_help(args)) {
-    print_dem_help();
+    print_dem_help(app);
     return 0;
   }
-  const DemOptions opt = parse(args);
+  app.read(args);
+  check(o);
+  const DemOptions& opt = o;
   // A resumed run takes its case from the checkpoint (a case file given too must match).
   std::optional<io::RunCheckpoint> ck;
   if (!opt.resume_dir.empty()) ck = io::read_checkpoint(opt.resume_dir);

@@ -23,11 +23,9 @@
 namespace centrec::cli {
 
 namespace {
-void print_run_help() {
+void print_run_help(const CommandLine& app) {
+  std::printf("usage: centrec run CASE.yaml --out DIR [options]\n\n%s\n", app.options_text().c_str());
   std::printf(
-      "usage: centrec run CASE.yaml --out DIR [--cache DIR] [--speed-rpm N] [--mass-flow KG_S]\n"
-      "                  [--threads N] [--seed N] [--replicas N] [--no-plots] [--allow-small-drum]\n"
-      "                  [--allow-unsteady] [--dem-from DEM_DIR]\n\n"
       "The coupled run (docs/architecture.md): the DEM of the case's `dem:` drum or slice\n"
       "(derived from `receiver:` by eqs 1-3 when receiver.dem_diameter_d is given), run until\n"
       "its flow is steady; its film as measured (full-circumference profiles per section, cut\n"
@@ -73,30 +71,19 @@ std::string parent_of(const std::string& dir) {
 }
 // `--replicas N`: the same command N times as child processes, seed base + k into
 // DIR/replica_<k>/, then the spread of the headline figures (runs/replica_summary.hpp).
-int run_replicas(const Args& args, const std::string& case_path, const std::string& out_dir,
+int run_replicas(const CommandLine& app, const Args& args, const std::string& case_path, const std::string& out_dir,
                  const config::CaseFile& cf, const runs::RunOptions& o, int replicas, bool no_plots) {
   if (!(cf.dem && cf.thermal && cf.thermal->film_source.from_dem()))
     throw UsageError(case_path + ": --replicas repeats the DEM with other seeds, but this case has no DEM film");
-  const long long base = o.seed >= 0 ? o.seed : static_cast<long long>(cf.dem->scene.seed);
+  const long long base = static_cast<long long>(o.overrides.seed ? *o.overrides.seed : cf.dem->scene.seed);
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const int threads = o.threads > 0 ? o.threads : cores;
+  const int threads = o.overrides.threads && *o.overrides.threads > 0 ? *o.overrides.threads : cores;
   const int parallel = std::min(replicas, threads);
   const int per_child = std::max(1, threads / parallel);
   io::ensure_directory(out_dir);
-  // The command as given, minus the flags this sets per replica.
-  std::vector<std::string> common;
-  for (std::size_t k = 0; k < args.size(); ++k) {
-    const std::string& a = args[k];
-    const bool with_value = a == "--out" || a == "--seed" || a == "--replicas" || a == "--threads" || a == "--cache";
-    if (with_value) {
-      ++k;
-      continue;
-    }
-    if (a.rfind("--out=", 0) == 0 || a.rfind("--seed=", 0) == 0 || a.rfind("--replicas=", 0) == 0 ||
-        a.rfind("--threads=", 0) == 0 || a.rfind("--cache=", 0) == 0 || a == "--no-plots")
-      continue;
-    common.push_back(a);
-  }
+  // The command as given, minus the options this sets per replica.
+  const Args common =
+      without_options(app, args, {"--out", "--seed", "--replicas", "--threads", "--cache", "--no-plots"});
   const std::string exe = own_executable();
   std::vector<ChildJob> jobs;
   std::vector<std::uint64_t> seeds;
@@ -143,39 +130,39 @@ int run_replicas(const Args& args, const std::string& case_path, const std::stri
 }  // namespace
 
 int cmd_run(const Args& args) {
-  if (wants_help(args)) {
-    print_run_help();
-    return 0;
-  }
   std::string case_path, out_dir;
   runs::RunOptions o;
   bool no_plots = false;
+  int replicas = 1;
   CommandLine app("run");
   app.add_option("CASE", case_path)->required();
-  app.add_option("--out", out_dir)->required();
-  app.add_option("--cache", o.cache_dir);
-  // The ranges of receiver.speed_rpm and receiver.mass_flow (config/case_receiver.cpp).
-  app.add_option("--speed-rpm", o.speed_rpm)->check(number_in(config::Range::open_closed(0.0, 1e5), "rpm"));
-  app.add_option("--mass-flow", o.mass_flow)->check(number_in(config::Range::open_closed(0.0, 1e4), "kg/s"));
-  app.add_option("--threads", o.threads)->check(integer_in(0, 1024));
-  app.add_option("--seed", o.seed)->check(integer_in(0, 2147483647));
-  int replicas = 1;
-  app.add_option("--replicas", replicas)->check(integer_in(1, 64));
-  app.add_option("--dem-from", o.dem_from);
-  app.add_flag("--no-plots", no_plots);
+  app.add_option("--out", out_dir, "the run's folder (created)")->required()->option_text("DIR");
+  app.add_option("--cache", o.cache_dir, "the DEM cache (default: the parent of DIR + /dem-cache)")->option_text("DIR");
+  add_override_flags(app, o.overrides,
+                     {OverrideFlag::speed_rpm, OverrideFlag::mass_flow, OverrideFlag::threads, OverrideFlag::seed});
+  app.add_option("--replicas", replicas, "run the chain with N DEM seeds (seed, seed + 1, ...) and their spread")
+      ->check(integer_in(1, 64))
+      ->option_text("N");
+  app.add_option("--dem-from", o.dem_from, "take the film of a finished `centrec dem` run of the same DEM inputs")
+      ->option_text("DEM_DIR");
+  app.add_flag("--no-plots", no_plots, "draw no figures");
   app.add_flag("--allow-small-drum", o.allow_small_drum,
                "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
   app.add_flag("--allow-unsteady", o.allow_unsteady,
                "use a DEM film that is not at steady flow or misses the flux closure (with a warning)");
+  if (wants_help(args)) {
+    print_run_help(app);
+    return 0;
+  }
   app.read(args);
   const bool plots = !no_plots;
   if (o.cache_dir.empty()) o.cache_dir = parent_of(out_dir) + "/dem-cache";
   const config::CaseFile cf = config::read_case_file(case_path);
-  const config::Overrides overrides = runs::run_overrides(o);
+  const config::Overrides& overrides = o.overrides;
   if (cf.dem && cf.thermal && cf.thermal->film_source.from_dem()) checked_dem(cf, overrides);
   if (replicas > 1 && !o.dem_from.empty())
     throw UsageError("--replicas runs the DEM with other seeds; --dem-from takes one earlier run: give one of them");
-  if (replicas > 1) return run_replicas(args, case_path, out_dir, cf, o, replicas, no_plots);
+  if (replicas > 1) return run_replicas(app, args, case_path, out_dir, cf, o, replicas, no_plots);
   const io::OutputFolder out(out_dir);
   runs::CoupledRun r;
   try {

@@ -28,9 +28,9 @@ struct Point {
   int status = -1;
 };
 
-void print_sweep_help() {
+void print_sweep_help(const CommandLine& app) {
+  std::printf("usage: centrec sweep CASE.yaml --out DIR [options]\n\n%s\n", app.options_text().c_str());
   std::printf(
-      "usage: centrec sweep CASE.yaml --out DIR [--parallel N] [--replicas N] [--cache DIR]\n\n"
       "Runs the coupled `centrec run` for every point of the case's `sweep:` grid\n"
       "(speed_rpm x mass_flow: the receiver's operating point, or the DEM drum's without a\n"
       "receiver), N processes at a time (sweep.parallel, one DEM thread each), each into\n"
@@ -69,21 +69,25 @@ std::string point_name(double rpm, double mdot) {
 }  // namespace
 
 int cmd_sweep(const Args& args) {
-  if (wants_help(args)) {
-    print_sweep_help();
-    return 0;
-  }
   std::string case_path, out_dir, cache;
   int parallel = 0, replicas = 1;
   bool allow_small_drum = false;
   CommandLine app("sweep");
   app.add_option("CASE", case_path)->required();
-  app.add_option("--out", out_dir)->required();
-  app.add_option("--cache", cache);
-  app.add_option("--parallel", parallel)->check(integer_in(1, 1024));
-  app.add_option("--replicas", replicas)->check(integer_in(1, 64));
+  app.add_option("--out", out_dir, "the sweep's folder (created)")->required()->option_text("DIR");
+  app.add_option("--cache", cache, "the DEM cache (default: DIR/dem-cache)")->option_text("DIR");
+  app.add_option("--parallel", parallel, "points run at a time (default sweep.parallel)")
+      ->check(integer_in(1, 1024))
+      ->option_text("N");
+  app.add_option("--replicas", replicas, "DEM seeds per point (`centrec run --replicas`)")
+      ->check(integer_in(1, 64))
+      ->option_text("N");
   app.add_flag("--allow-small-drum", allow_small_drum,
                "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
+  if (wants_help(args)) {
+    print_sweep_help(app);
+    return 0;
+  }
   app.read(args);
   const config::CaseFile cf = config::read_case_file(case_path);
   if (!cf.sweep) throw std::invalid_argument(case_path + " has no `sweep:` section (speed_rpm, mass_flow lists)");

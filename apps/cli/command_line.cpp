@@ -43,6 +43,42 @@ void CommandLine::read(const Args& args) {
   }
 }
 
+std::string CommandLine::options_text() const {
+  std::vector<std::pair<std::string, std::string>> rows;
+  std::size_t width = 0;
+  for (const CLI::Option* o : get_options()) {
+    if (o->get_description().empty() || o->get_lnames().empty()) continue;
+    std::string name = "--" + o->get_lnames().front();
+    if (o->get_expected_max() > 0) name += " " + (o->get_option_text().empty() ? std::string("VALUE") : o->get_option_text());
+    width = std::max(width, name.size());
+    rows.emplace_back(name, o->get_description());
+  }
+  std::string text;
+  for (const auto& [name, help] : rows) text += "  " + name + std::string(width + 3 - name.size(), ' ') + help + "\n";
+  return text;
+}
+
+bool CommandLine::takes_value(const std::string& name) const {
+  for (const CLI::Option* o : get_options())
+    for (const auto& n : o->get_lnames())
+      if ("--" + n == name) return o->get_expected_max() > 0;
+  return false;
+}
+
+Args without_options(const CommandLine& app, const Args& args, const std::vector<std::string>& names) {
+  Args kept;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const std::string& a = args[k];
+    const std::string name = a.substr(0, a.find('='));
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      kept.push_back(a);
+      continue;
+    }
+    if (name == a && app.takes_value(name)) ++k;  // "--seed 3": its value too
+  }
+  return kept;
+}
+
 const CLI::Validator& positive_number() {
   static const CLI::Validator v = number_in(config::Range::positive());
   return v;

@@ -29,7 +29,16 @@ class CommandLine : public CLI::App {
   // Reads args into the options declared on it; throws UsageError naming the problem in
   // one line (an unknown option with the closest known one) and `centrec <name> --help`.
   void read(const Args& args);
+  // Every option declared with a help text, one per line in declaration order:
+  // "  --name VALUE   help" (VALUE = the option's value name; a flag has none).
+  std::string options_text() const;
+  // Whether `name` ("--cache") is a declared option that takes a value.
+  bool takes_value(const std::string& name) const;
 };
+
+// `args` without the options `names` (and their values): the command a child process
+// repeats with its own values of them.
+Args without_options(const CommandLine& app, const Args& args, const std::vector<std::string>& names);
 
 // Accepts a finite number above zero, written without trailing characters.
 const CLI::Validator& positive_number();

@@ -5,11 +5,15 @@
 namespace centrec::cli {
 
 void add_engine_options(CLI::App& app, DemEngineOptions& o) {
-  app.add_option("--engine", o.engine)->check(CLI::IsMember({"centrec", "liggghts"}));
-  app.add_option("--ranks", o.ranks)->check(positive_number());
-  app.add_option("--mpirun", o.mpirun);
-  app.add_option("--liggghts", o.liggghts);
-  app.add_option("--wall-rolling-model", o.wall_rolling_model);
+  app.add_option("--engine", o.engine, "the DEM engine: centrec (native) or liggghts (LIGGGHTS 3.8)")
+      ->check(CLI::IsMember({"centrec", "liggghts"}))
+      ->option_text("centrec|liggghts");
+  app.add_option("--ranks", o.ranks, "MPI ranks of a LIGGGHTS run")->check(positive_number())->option_text("N");
+  app.add_option("--mpirun", o.mpirun, "the MPI launcher of a LIGGGHTS run (srun on a cluster)")->option_text("CMD");
+  app.add_option("--liggghts", o.liggghts, "the LIGGGHTS executable")->option_text("EXE");
+  app.add_option("--wall-rolling-model", o.wall_rolling_model,
+                 "overrides contacts.wall_rolling_model (liggghts: LIGGGHTS' form)")
+      ->option_text("relative|liggghts");
 }
 
 void apply_wall_rolling_model(config::DemCase& dc, const std::string& model) {

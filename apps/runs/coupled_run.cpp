@@ -25,7 +25,7 @@ double since(std::chrono::steady_clock::time_point t0) {
 // The DEM inputs as they will run: receiver derivation, then the command-line overrides
 // (config::effective_dem, the same as `centrec dem` and the case checks).
 void effective_dem(const config::CaseFile& cf, const RunOptions& o, CoupledRun& r) {
-  const config::Overrides ov = run_overrides(o);
+  const config::Overrides& ov = o.overrides;
   r.has_receiver = cf.receiver.has_value();
   if (cf.receiver) r.receiver = config::effective_receiver(*cf.receiver, ov);
   r.dem = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, ov);
@@ -43,23 +43,14 @@ void allow_or_refuse(CoupledRun& r, const std::string& problem, bool allowed, co
 
 }  // namespace
 
-config::Overrides run_overrides(const RunOptions& o) {
-  config::Overrides ov;
-  if (o.threads >= 0) ov.threads = o.threads;
-  if (o.speed_rpm > 0.0) ov.speed_rpm = o.speed_rpm;
-  if (o.mass_flow > 0.0) ov.mass_flow = o.mass_flow;
-  if (o.seed >= 0) ov.seed = static_cast<std::uint64_t>(o.seed);
-  return ov;
-}
-
 CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
   if (!cf.thermal) throw std::invalid_argument(cf.path + ": a coupled run needs a `thermal:` section");
   CoupledRun r;
   r.thermal = *cf.thermal;
-  if (!o.dem_from.empty() && (!r.film_from_dem() || o.speed_rpm > 0.0 || o.mass_flow > 0.0 || o.seed >= 0))
+  if (!o.dem_from.empty() && (!r.film_from_dem() || o.overrides.any_operating_point() || o.overrides.seed))
     throw std::invalid_argument(cf.path + ": --dem-from takes the film of an earlier DEM run as it ran; it goes with "
                                           "neither a case without a DEM film nor --speed-rpm, --mass-flow or --seed");
-  if (!r.film_from_dem() && (o.speed_rpm > 0.0 || o.mass_flow > 0.0))
+  if (!r.film_from_dem() && o.overrides.any_operating_point())
     throw std::invalid_argument(cf.path + ": --speed-rpm / --mass-flow change the DEM, but this case takes its film "
                                           "from " + r.thermal.film_source.text() + " (no DEM to rerun)");
   if (r.film_from_dem()) {

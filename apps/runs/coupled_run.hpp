@@ -24,11 +24,8 @@
 namespace centrec::runs {
 
 struct RunOptions {
-  std::string cache_dir;      // DEM cache root (CACHE/<key>/)
-  double speed_rpm = 0.0;     // > 0: the receiver's (or, without one, the DEM drum's) speed
-  double mass_flow = 0.0;     // > 0: the receiver's (or the DEM feeder's) mass flow, kg/s
-  int threads = -1;           // DEM threads (-1 = from the case)
-  long long seed = -1;        // >= 0: the DEM's random seed instead of dem.seed (a replica)
+  std::string cache_dir;         // DEM cache root (CACHE/<key>/)
+  config::Overrides overrides;   // --threads, --speed-rpm, --mass-flow, --seed
   bool allow_small_drum = false;  // run a DEM drum below coupling::kMinimumDrumDiameterOverD
   bool allow_unsteady = false;    // use a film that is not steady or fails the flux closure
   std::string dem_from;  // a finished `centrec dem` run of the same DEM inputs: its dem.h5, no DEM run
@@ -56,9 +53,6 @@ struct CoupledRun {
   // false: the case's analytic film or film file was used, no DEM.
   bool film_from_dem() const { return thermal.film_source.from_dem(); }
 };
-
-// The options as config::Overrides (unset where they take the case's value).
-config::Overrides run_overrides(const RunOptions& o);
 
 // Throws std::invalid_argument / std::runtime_error with a clear message on failure.
 CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o);
