@@ -247,10 +247,9 @@ struct ForcePass {
       const double ri = R[i];
       for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
         const std::int32_t j = nbr[e];
-        Vec3 d = xi - X[j];
-        d.z = pz.image(d.z);
-        const double rsum = ri + R[j];
-        const double dist2 = norm2(d);
+        Vec3 d;
+        double rsum;
+        const double dist2 = separation(xi, ri, j, d, rsum);
         const bool apart = dist2 >= rsum * rsum;  // false for NaN: a non-finite pair goes to the law's checks
         if (apart & (touch[e] != 0)) forget(e);
         batch[count].sd = d;
@@ -271,6 +270,15 @@ struct ForcePass {
   }
 #endif
 
+  // The separation of a row's particle (at xi, radius ri) from partner j: d = xi - x_j
+  // (minimum image) into d, r_i + r_j into rsum; returns |d|^2.
+  CENTREC_INLINE double separation(Vec3 xi, double ri, std::int32_t j, Vec3& d, double& rsum) const {
+    d = xi - X[j];
+    d.z = pz.image(d.z);
+    rsum = ri + R[j];
+    return norm2(d);
+  }
+
   // The entries of row i in order: a separated pair is forgotten; for one in contact,
   // contact(e, j, i_first, a, c, sd, dist2, rsum) with a, c the pair in canonical order,
   // sd = x_a - x_c (minimum image), dist2 = |sd|^2 < rsum^2, rsum = R_i + R_j.
@@ -281,10 +289,9 @@ struct ForcePass {
     const std::int64_t idi = ID[i];
     for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
       const std::int32_t j = nbr[e];
-      Vec3 d = xi - X[j];
-      d.z = pz.image(d.z);
-      const double rsum = ri + R[j];
-      const double dist2 = norm2(d);
+      Vec3 d;
+      double rsum;
+      const double dist2 = separation(xi, ri, j, d, rsum);
       if (dist2 >= rsum * rsum) {
         if (touch[e]) forget(e);
         continue;
