@@ -214,6 +214,15 @@ struct ForcePass {
       }
     };
     const auto evaluate_batch = [&] {
+      for (int k = 0; k < count; ++k) {  // the canonical operand order of each contact (walk_row)
+        Entry& en = entry[k];
+        pair_batch::PairRef& b = batch[k];
+        en.i_first = ID[en.i] < ID[en.j];
+        b.a = en.i_first ? en.i : en.j;
+        b.c = en.i_first ? en.j : en.i;
+        if (!en.i_first) b.sd = -b.sd;
+        b.pc = &pair(MAT[b.a], MAT[b.c]);
+      }
       pair_batch::PairResults r;
       pair_batch::evaluate_pairs(batch, count, {V, Wv, R, M}, dt, r);
       for (int k = 0; k < count; ++k) {
@@ -227,14 +236,32 @@ struct ForcePass {
       }
       count = 0;
     };
+    // walk_row's test, written without a branch on its outcome (speed: in a film about a
+    // third of the entries are contacts, in no order the processor can predict): every
+    // entry is written to the next free lane, which only a contact keeps. The contacts,
+    // their order and their arithmetic are walk_row's; the operand order is set in
+    // evaluate_batch, for the contacts only.
     for (long i = i0; i < i1; ++i) {
       fetch_ahead(i);
-      walk_row(i, [&](std::uint32_t e, std::int32_t j, bool i_first, long a, long c, Vec3 sd, double dist2,
-                      double rsum) {
-        batch[count] = {sd, dist2, rsum, a, c, &hist[e], &pair(MAT[a], MAT[c])};
-        entry[count] = {i, e, j, i_first};
-        if (++count == pair_batch::kLanes) evaluate_batch();
-      });
+      const Vec3 xi = X[i];
+      const double ri = R[i];
+      for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
+        const std::int32_t j = nbr[e];
+        Vec3 d;
+        double rsum;
+        const double dist2 = separation(xi, ri, j, d, rsum);
+        const bool apart = dist2 >= rsum * rsum;  // false for NaN: a non-finite pair goes to the law's checks
+        if (apart & (touch[e] != 0)) forget(e);
+        batch[count].sd = d;
+        batch[count].dist2 = dist2;
+        batch[count].rsum = rsum;
+        batch[count].old = &hist[e];
+        entry[count].i = i;
+        entry[count].e = e;
+        entry[count].j = j;
+        count += apart ? 0 : 1;
+        if (count == pair_batch::kLanes) evaluate_batch();
+      }
       if (count == 0) total_until(i + 1);
     }
     if (count > 0) evaluate_batch();
@@ -242,6 +269,15 @@ struct ForcePass {
     return d2;
   }
 #endif
+
+  // The separation of a row's particle (at xi, radius ri) from partner j: d = xi - x_j
+  // (minimum image) into d, r_i + r_j into rsum; returns |d|^2.
+  CENTREC_INLINE double separation(Vec3 xi, double ri, std::int32_t j, Vec3& d, double& rsum) const {
+    d = xi - X[j];
+    d.z = pz.image(d.z);
+    rsum = ri + R[j];
+    return norm2(d);
+  }
 
   // The entries of row i in order: a separated pair is forgotten; for one in contact,
   // contact(e, j, i_first, a, c, sd, dist2, rsum) with a, c the pair in canonical order,
@@ -253,10 +289,9 @@ struct ForcePass {
     const std::int64_t idi = ID[i];
     for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
       const std::int32_t j = nbr[e];
-      Vec3 d = xi - X[j];
-      d.z = pz.image(d.z);
-      const double rsum = ri + R[j];
-      const double dist2 = norm2(d);
+      Vec3 d;
+      double rsum;
+      const double dist2 = separation(xi, ri, j, d, rsum);
       if (dist2 >= rsum * rsum) {
         if (touch[e]) forget(e);
         continue;

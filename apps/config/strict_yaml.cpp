@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <unordered_set>
 
 namespace centrec::config {
 
@@ -39,34 +40,66 @@ std::size_t invalid_utf8_at(const std::string& text) {
   return std::string::npos;
 }
 
+// Bounds on a case's tree as yaml-cpp builds it. An alias shares its anchor's node, so
+// a few lines of nested aliases stand for a billion values and an alias inside its own
+// anchor makes a cycle; the walk below stops at either with an error instead of running
+// without end (docs/reliability.md "Case files"). A case holds a few hundred values.
+constexpr std::size_t kMaxCaseValues = 1000000;
+constexpr std::size_t kMaxCaseDepth = 64;
+
 // Checks what yaml-cpp accepts but a case file must not hold: a key given twice, a key
 // without a value, a quoted value whose closing quote is not on its own line (an
-// unterminated quote swallows the rest of the file), a key that is not a plain word.
-void check_tree(const YAML::Node& n, const std::string& text, const std::string& source, const std::string& path) {
-  if (n.IsMap()) {
-    std::vector<std::string> seen;
-    for (auto it = n.begin(); it != n.end(); ++it) {
-      if (!it->first.IsScalar())
-        throw ConfigError(line_of(source, it->first.Mark()) + ": " + (path.empty() ? "" : path + ": ") +
-                          "a key must be a plain word");
-      const std::string key = it->first.Scalar();
-      const std::string kp = path.empty() ? key : path + "." + key;
-      if (std::find(seen.begin(), seen.end(), key) != seen.end())
-        throw ConfigError(line_of(source, it->first.Mark()) + ": " + kp +
-                          " is given twice in one mapping (remove one of them)");
-      seen.push_back(key);
-      if (it->second.IsNull())
-        throw ConfigError(line_of(source, it->first.Mark()) + ": " + kp +
-                          " has no value (give one, or remove the key for its default)");
-      check_tree(it->second, text, source, kp);
+// unterminated quote swallows the rest of the file), a key that is not a plain word, an
+// alias that holds itself, aliases that expand past kMaxCaseValues or kMaxCaseDepth.
+struct TreeCheck {
+  const std::string& text;
+  const std::string& source;
+  std::vector<YAML::Node> ancestors;  // the nodes from the root down to the one checked
+  std::size_t values = 0;
+
+  void enter(const YAML::Node& n, const std::string& path) {
+    for (const YAML::Node& a : ancestors)
+      if (a.is(n))
+        throw ConfigError(line_of(source, n.Mark()) + ": " + (path.empty() ? "the case" : path) +
+                          " refers to itself (a YAML alias inside its own anchor)");
+    if (++values > kMaxCaseValues || ancestors.size() >= kMaxCaseDepth)
+      throw ConfigError(line_of(source, n.Mark()) + ": " + (path.empty() ? "the case" : path) +
+                        ": its YAML aliases expand to more than " + std::to_string(kMaxCaseValues) +
+                        " values or " + std::to_string(kMaxCaseDepth) + " levels (no case holds that many)");
+    ancestors.push_back(n);
+    check(n, path);
+    ancestors.pop_back();
+  }
+
+  void check(const YAML::Node& n, const std::string& path) {
+    if (n.IsMap()) {
+      std::unordered_set<std::string> seen;
+      for (auto it = n.begin(); it != n.end(); ++it) {
+        if (!it->first.IsScalar())
+          throw ConfigError(line_of(source, it->first.Mark()) + ": " + (path.empty() ? "" : path + ": ") +
+                            "a key must be a plain word");
+        const std::string& key = it->first.Scalar();
+        const std::string kp = path.empty() ? key : path + "." + key;
+        if (!seen.insert(key).second)
+          throw ConfigError(line_of(source, it->first.Mark()) + ": " + kp +
+                            " is given twice in one mapping (remove one of them)");
+        if (it->second.IsNull())
+          throw ConfigError(line_of(source, it->first.Mark()) + ": " + kp +
+                            " has no value (give one, or remove the key for its default)");
+        enter(it->second, kp);
+      }
+    } else if (n.IsSequence()) {
+      for (std::size_t i = 0; i < n.size(); ++i) {
+        const std::string kp = path + "[" + std::to_string(i) + "]";
+        if (n[i].IsNull()) throw ConfigError(line_of(source, n[i].Mark()) + ": " + kp + " has no value");
+        enter(n[i], kp);
+      }
+    } else if (n.IsScalar()) {
+      check_quotes(n, path);
     }
-  } else if (n.IsSequence()) {
-    for (std::size_t i = 0; i < n.size(); ++i) {
-      const std::string kp = path + "[" + std::to_string(i) + "]";
-      if (n[i].IsNull()) throw ConfigError(line_of(source, n[i].Mark()) + ": " + kp + " has no value");
-      check_tree(n[i], text, source, kp);
-    }
-  } else if (n.IsScalar()) {
+  }
+
+  void check_quotes(const YAML::Node& n, const std::string& path) const {
     const YAML::Mark m = n.Mark();
     if (m.pos < 0 || static_cast<std::size_t>(m.pos) >= text.size()) return;
     const char q = text[static_cast<std::size_t>(m.pos)];
@@ -86,6 +119,26 @@ void check_tree(const YAML::Node& n, const std::string& text, const std::string&
       }
     }
   }
+};
+
+// The line (1-based) of the '---' that starts the second document of `text`: the first
+// document marker after some content (a '---' before any content opens the first).
+int second_document_line(const std::string& text) {
+  bool content = false;
+  int line = 0;
+  for (std::size_t a = 0; a < text.size();) {
+    std::size_t b = text.find('\n', a);
+    if (b == std::string::npos) b = text.size();
+    const std::string l = text.substr(a, b - a);
+    ++line;
+    if (l.rfind("---", 0) == 0 || l.rfind("...", 0) == 0) {
+      if (content) return line;
+    } else if (l.find_first_not_of(" \t\r") != std::string::npos && l[l.find_first_not_of(" \t\r")] != '#') {
+      content = true;
+    }
+    a = b + 1;
+  }
+  return line;
 }
 
 // Parses a whole case text strictly (see check_tree) into a mapping.
@@ -103,15 +156,21 @@ YAML::Node parse_case(const std::string& text, const std::string& source) {
                         ": a control character (byte " + hex + ") in the text");
     }
   }
-  YAML::Node root;
+  std::vector<YAML::Node> documents;
   try {
-    root = YAML::Load(text);
+    documents = YAML::LoadAll(text);
   } catch (const YAML::ParserException& e) {
     throw ConfigError(source + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
   }
-  if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  // yaml-cpp reads the first document of a file and ignores the rest; a case is one.
+  if (documents.size() > 1)
+    throw ConfigError(source + ":" + std::to_string(second_document_line(text)) +
+                      ": a second YAML document (after '---'); a case file holds one: merge them or remove one");
+  if (documents.empty() || documents.front().IsNull())
+    throw ConfigError(source + ": holds no case (the file is empty or only comments)");
+  const YAML::Node root = documents.front();
   if (!root.IsMap()) throw ConfigError(source + ": the case must be a YAML mapping (key: value)");
-  check_tree(root, text, source, "");
+  TreeCheck{text, source, {}, 0}.enter(root, "");
   return root;
 }
 

@@ -16,6 +16,7 @@
 
 #include "tests/reliability/run_binary.hpp"
 #include "tests/test_case_dir.hpp"
+#include "tests/yaml_abuse.hpp"
 
 using centrec::testing::BinaryRun;
 using centrec::testing::run_binary;
@@ -59,6 +60,7 @@ struct Mutator {
   std::string apply(const std::string& category, const std::string& text) {
     std::vector<std::string> v = lines_of(text);
     const std::vector<std::size_t> c = content_lines(v);
+    if (category == "yaml") return yaml_abuse(v, c);
     if (c.empty()) return text + "x: 1\n";  // a case truncated to nothing: give it a line
     std::string& line = v[any(c)];
     if (category == "number") {
@@ -117,6 +119,29 @@ struct Mutator {
     }
     return join(v);
   }
+
+  // What no case file is, though YAML allows it: every result must be refused.
+  std::string yaml_abuse(std::vector<std::string> v, const std::vector<std::size_t>& c) {
+    const int op = static_cast<int>(pick(7));
+    if (op == 0) return "";                      // empty
+    if (op == 1) return " \n\t\n   \n";          // whitespace only
+    if (op == 2) {                               // every line commented out
+      for (auto& l : v) l = "# " + l;
+      return join(v);
+    }
+    if (op == 3) return join(v) + "---\n" + join(v);  // a second document
+    if (op == 4) {                               // an alias inside its own anchor
+      v.insert(v.begin() + static_cast<long>(c.empty() ? 0 : any(c)), pick(2) ? "loop: &self [*self]" : "loop: &self {a: *self}");
+      return join(v);
+    }
+    if (op == 5) {                               // aliases that expand to 1e9 values
+      const std::string bomb = centrec::testing::alias_bomb();
+      return pick(2) ? bomb + join(v) : join(v) + bomb;
+    }
+    std::string keys;                            // 20,000 unknown keys
+    for (int k = 0; k < 20000; ++k) keys += "unknown_" + std::to_string(k) + ": 1\n";
+    return join(v) + keys;
+  }
 };
 
 }  // namespace
@@ -130,7 +155,7 @@ TEST(FuzzValidate, MutatedCasesNeverCrashHangOrRefuseVaguely) {
                                           "thermal_centrec_cavity.yaml"};
   std::vector<std::string> texts;
   for (const auto& s : seeds) texts.push_back(slurp(CENTREC_SOURCE_DIR "/cases/" + s));
-  const std::vector<std::string> categories = {"number", "structure", "key", "value", "bytes", "truncate"};
+  const std::vector<std::string> categories = {"number", "structure", "key", "value", "bytes", "truncate", "yaml"};
   constexpr int kPerCategory = 50;
 
   struct Tally {
@@ -158,6 +183,7 @@ TEST(FuzzValidate, MutatedCasesNeverCrashHangOrRefuseVaguely) {
         ADD_FAILURE() << "signal " << r.signal << " on a mutation of " << seeds[which] << ":\n" << text;
       } else if (r.exit_code == 0) {
         ++t.accepted;
+        if (cat == "yaml") ADD_FAILURE() << "accepted as a case:\n" << text.substr(0, 400);
       } else if (std::regex_search(r.err, clear) && r.exit_code == 2 &&
                  std::count(r.err.begin(), r.err.end(), '\n') == 1) {
         ++t.refused;

@@ -2,9 +2,12 @@
 // errors naming the key path, the line, the value and the allowed range.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdio>
 #include <functional>
 
 #include "config/strict_yaml.hpp"
+#include "tests/yaml_abuse.hpp"
 
 using centrec::config::ConfigError;
 using centrec::config::MapReader;
@@ -72,4 +75,54 @@ TEST(StrictYaml, ReadingAbsentKeyDoesNotInsertIt) {
   r.number("a", 0, Range::any());
   r.number("b", 2, Range::any());
   EXPECT_NO_THROW(r.finish());
+}
+
+// What yaml-cpp accepts but a case file must not be: no document, two documents, an alias
+// that holds itself, aliases that expand beyond any case, and a reading cost that grows
+// faster than the file (docs/reliability.md "Case files").
+TEST(StrictYaml, AFileWithoutKeysIsNotACase) {
+  for (const char* text : {"", "   \n\n", "# only a comment\n# and another\n"}) {
+    const std::string msg = error_of([&] { MapReader::from_string(text, "c.yaml"); });
+    std::printf("'%s' -> %s\n", text, msg.c_str());
+    EXPECT_NE(msg.find("c.yaml: holds no case"), std::string::npos) << msg;
+  }
+}
+
+TEST(StrictYaml, ASecondDocumentIsRefused) {
+  const std::string msg = error_of([] { MapReader::from_string("a: 1\n---\ndem: {drum: oops}\n", "c.yaml"); });
+  std::printf("%s\n", msg.c_str());
+  EXPECT_NE(msg.find("c.yaml:2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("second YAML document"), std::string::npos) << msg;
+}
+
+TEST(StrictYaml, AnAliasThatHoldsItselfIsRefused) {
+  for (const char* text : {"a: &x [*x]\n", "a: &x {b: *x}\n"}) {
+    const std::string msg = error_of([&] { MapReader::from_string(text, "c.yaml"); });
+    std::printf("%s -> %s\n", text, msg.c_str());
+    EXPECT_NE(msg.find("c.yaml:1"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("refers to itself"), std::string::npos) << msg;
+  }
+}
+
+TEST(StrictYaml, AliasesThatExpandBeyondAnyCaseAreRefusedAtOnce) {
+  const std::string text = centrec::testing::alias_bomb();  // 1e9 values once expanded
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string msg = error_of([&] { MapReader::from_string(text, "c.yaml"); });
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("%.3f s: %s\n", s, msg.c_str());
+  EXPECT_NE(msg.find("aliases"), std::string::npos) << msg;
+  EXPECT_LT(s, 2.0);
+}
+
+TEST(StrictYaml, ReadingCostGrowsWithTheFileNotItsSquare) {
+  // 200,000 distinct keys: a check that compares every key with every other takes ~20 s.
+  std::string text;
+  for (int k = 0; k < 200000; ++k) text += "key_" + std::to_string(k) + ": 1\n";
+  const auto t0 = std::chrono::steady_clock::now();
+  auto r = MapReader::from_string(text, "c.yaml");
+  const std::string msg = error_of([&] { r.finish(); });
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("200000 keys read and refused in %.3f s: %.80s\n", s, msg.c_str());
+  EXPECT_NE(msg.find("key_"), std::string::npos) << msg;
+  EXPECT_LT(s, 5.0);
 }
