@@ -35,7 +35,7 @@ def main(argv=None):
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
     panels = [("T_out_K", "outlet temperature (C)", lambda p: p["T_out_K"] - 273.15),
               ("efficiency", "thermal efficiency", lambda p: p["efficiency"]),
-              ("k_eff", "film k_eff (W/(m K))", lambda p: p["k_eff"]["k_eff"]),
+              ("k_eff_W_mK", "film k_eff (W/(m K))", lambda p: p["k_eff_W_mK"]),
               ("film_thickness_d", "mean film thickness (d)", lambda p: p["film_thickness_d"])]
     for ax, (_, label, get) in zip(axes.flat, panels):
         for n in speeds:
@@ -56,11 +56,11 @@ def main(argv=None):
     names = ["%.4g rpm\n%.4g kg/s%s" % (p["speed_rpm"], p["mass_flow_kg_s"], "" if p["steady"] else "\n(not steady)")
              for p in pts]
     bottom = [0.0] * len(pts)
-    for part in ("bed_conduction", "radiation", "mixing"):
-        vals = [p["k_eff"][part] for p in pts]
+    for part, column in (("bed_conduction", "k_bed_W_mK"), ("radiation", "k_rad_W_mK"), ("mixing", "k_mix_W_mK")):
+        vals = [p[column] for p in pts]
         ax.bar(names, vals, bottom=bottom, label=part)
         bottom = [b + v for b, v in zip(bottom, vals)]
-    ax.plot(names, [p["k_eff"]["k_eff"] for p in pts], "kD", label="k_eff (series value)")
+    ax.plot(names, [p["k_eff_W_mK"] for p in pts], "kD", label="k_eff (series value)")
     ax.set_ylabel("W/(m K), film mean")
     ax.set_title("parts of k_eff over the operating window")
     ax.legend()

@@ -15,6 +15,7 @@
 #include "io/summary_json.hpp"
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
+#include "runs/headline_figures.hpp"
 #include "runs/provenance.hpp"
 #include "runs/replica_summary.hpp"
 #include "runs/interrupt.hpp"
@@ -120,9 +121,10 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
   io::write_json_file(out_dir + "/summary.json", s);
   std::printf("centrec run %s: mean +- standard deviation over %d DEM seeds (%s/summary.json \"replicas\")\n",
               case_path.c_str(), replicas, out_dir.c_str());
-  for (const std::string& path : runs::replica_figures()) {
-    const auto& f = s["replicas"]["figures"][path];
-    std::printf("  %-34s %.6g +- %.3g\n", path.c_str() + 1, f["mean"].get<double>(), f["std"].get<double>());
+  for (const runs::HeadlineFigure& fig : runs::headline_figures()) {
+    const auto& f = s["replicas"]["figures"][fig.pointer];
+    std::printf("  %-34s %.6g +- %.3g %s\n", fig.pointer.c_str() + 1, f["mean"].get<double>(), f["std"].get<double>(),
+                fig.unit == "-" ? "" : fig.unit.c_str());
   }
   for (const auto& w : s["warnings"]) std::printf("  WARNING: %s\n", w.get<std::string>().c_str());
   return 0;
@@ -179,7 +181,6 @@ int cmd_run(const Args& args) {
   io::write_json_file(out_dir + "/summary.json", s);
 
   const auto& b = r.result.balance;
-  const auto& k = s["k_eff"]["film_mean"];
   std::printf("centrec run %s\n", case_path.c_str());
   if (r.film_from_dem()) {
     const auto& sd = r.dem.scene;
@@ -206,8 +207,10 @@ int cmd_run(const Args& args) {
   std::printf("  outlet temperature %.2f K (%.2f C) from %.2f K, efficiency %.4f, mdot %.4g kg/s\n", b.T_out,
               b.T_out - 273.15, r.thermal.model.T_in, b.efficiency, b.mass_flow);
   runs::print_receiver_report(r.thermal, r.result);
-  std::printf("  k_eff %.4g W/(m K) = bed %.4g + radiation %.4g + mixing %.4g\n", k["k_eff"].get<double>(),
-              k["bed_conduction"].get<double>(), k["radiation"].get<double>(), k["mixing"].get<double>());
+  const auto k_mean = [&](double thermal::KeffSection::*m) { return runs::section_mean(r.result.keff, m); };
+  std::printf("  k_eff %.4g W/(m K) = bed %.4g + radiation %.4g + mixing %.4g\n", k_mean(&thermal::KeffSection::k_eff),
+              k_mean(&thermal::KeffSection::bed_conduction), k_mean(&thermal::KeffSection::radiation),
+              k_mean(&thermal::KeffSection::mixing));
   std::printf("  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote %s/{summary.json,results.h5,results.xmf,film.h5}\n",
               r.dem_seconds, r.mapping_seconds, r.thermal_seconds, out_dir.c_str());
   if (plots) {

@@ -18,6 +18,7 @@
 #include "io/summary_json.hpp"
 #include "config/case_receiver.hpp"
 #include "coupling/scaling_laws.hpp"
+#include "runs/headline_figures.hpp"
 
 namespace centrec::cli {
 
@@ -125,46 +126,53 @@ int cmd_sweep(const Args& args) {
         std::fflush(stdout);
       });
 
-  // Table of the headline figures.
+  // Table of the headline figures (runs/headline_figures.hpp), read from each point's summary.json.
+  const auto& figures = runs::headline_figures();
   nlohmann::json table = nlohmann::json::array();
   std::ostringstream csv;
-  csv << "speed_rpm,mass_flow_kg_s,T_out_K,efficiency,k_eff_W_mK,k_bed_W_mK,k_rad_W_mK,k_mix_W_mK,"
-         "film_thickness_d,imposed_mdot_kg_s,dem_flow";
-  if (replicas > 1) csv << ",T_out_std_K,efficiency_std,k_eff_std_W_mK,replicas";
+  csv << "speed_rpm,mass_flow_kg_s";
+  for (const auto& f : figures) csv << ',' << f.column;
+  csv << ",dem_flow";
+  if (replicas > 1) {
+    for (const auto& f : figures) csv << ',' << f.column << "_std";
+    csv << ",replicas";
+  }
   csv << '\n';
   int failed = 0;
   for (const Point& p : points) {
     nlohmann::json row = {{"speed_rpm", p.rpm}, {"mass_flow_kg_s", p.mdot}, {"dir", p.dir}, {"status", p.status}};
-    csv << p.rpm << ',' << p.mdot << ',';
-    if (p.status == 0) {
-      const nlohmann::json s = io::read_json_file(p.dir + "/summary.json");
-      const auto& k = s["k_eff"]["film_mean"];
-      row["T_out_K"] = s["T_out_K"];
-      row["efficiency"] = s["efficiency"];
-      row["k_eff"] = k;
-      row["film_thickness_d"] = s["film"]["mean_thickness_d"];
-      row["imposed_mdot_kg_s"] = s["mass_flow_kg_s"];  // the point's own (receiver) flow
-      const bool steady = s["dem"]["steady"].get<bool>();
-      const std::string flow = steady ? "steady" : "NOT steady";
-      row["dem_flow"] = s["dem"]["steady_state"];
-      row["dem_flow_steady"] = steady;
-      row["warnings"] = s["warnings"];
-      csv << s["T_out_K"].get<double>() << ',' << s["efficiency"].get<double>() << ','
-          << k["k_eff"].get<double>() << ',' << k["bed_conduction"].get<double>() << ','
-          << k["radiation"].get<double>() << ',' << k["mixing"].get<double>() << ','
-          << s["film"]["mean_thickness_d"].get<double>() << ','
-          << s["mass_flow_kg_s"].get<double>() << ',' << flow;
-      if (replicas > 1) {
-        const auto& f = s["replicas"]["figures"];
-        row["replicas"] = s["replicas"];
-        csv << ',' << f["/T_out_K"]["std"].get<double>() << ',' << f["/efficiency"]["std"].get<double>() << ','
-            << f["/k_eff/film_mean/k_eff"]["std"].get<double>() << ',' << s["replicas"]["count"].get<int>();
-      }
-      csv << '\n';
-    } else {
+    csv << p.rpm << ',' << p.mdot;
+    if (p.status != 0) {
       ++failed;
-      csv << ",,,,,,,,failed" << (replicas > 1 ? ",,,," : "") << '\n';
+      csv << std::string(figures.size(), ',') << ",failed";
+      if (replicas > 1) csv << std::string(figures.size() + 1, ',');
+      csv << '\n';
+      table.push_back(row);
+      continue;
     }
+    const nlohmann::json s = io::read_json_file(p.dir + "/summary.json");
+    for (const auto& f : figures) {
+      double v = 0.0;
+      csv << ',';
+      if (!runs::headline_value(s, f, v)) continue;  // an empty cell: the point has no such figure
+      row[f.column] = v;
+      csv << v;
+    }
+    const bool steady = s.contains("dem") && s["dem"].value("steady", false);
+    row["dem_flow"] = s.contains("dem") ? s["dem"].value("steady_state", "") : "";
+    row["dem_flow_steady"] = steady;
+    row["warnings"] = s.value("warnings", nlohmann::json::array());
+    csv << ',' << (steady ? "steady" : "NOT steady");
+    if (replicas > 1) {
+      const auto& spread = s["replicas"]["figures"];
+      for (const auto& f : figures) {
+        csv << ',';
+        if (spread.contains(f.pointer)) csv << spread[f.pointer]["std"].get<double>();
+      }
+      row["replicas"] = s["replicas"];
+      csv << ',' << s["replicas"]["count"].get<int>();
+    }
+    csv << '\n';
     table.push_back(row);
   }
   io::write_text_atomically(out_dir + "/sweep.csv", csv.str());

@@ -4,16 +4,9 @@
 #include <set>
 #include <stdexcept>
 
-namespace centrec::runs {
+#include "runs/headline_figures.hpp"
 
-const std::vector<std::string>& replica_figures() {
-  static const std::vector<std::string> f = {
-      "/T_out_K",          "/efficiency",          "/k_eff/film_mean/k_eff",
-      "/k_eff/film_mean/bed_conduction", "/k_eff/film_mean/radiation", "/k_eff/film_mean/mixing",
-      "/film/mean_thickness_d",          "/coupling/flow_closure_mean", "/coupling/imposed_velocity_factor",
-      "/dem/measured_mdot_kg_s"};
-  return f;
-}
+namespace centrec::runs {
 
 Spread spread(const std::vector<double>& values) {
   Spread s;
@@ -34,17 +27,17 @@ nlohmann::json combine_replicas(const std::vector<nlohmann::json>& summaries, co
   nlohmann::json out = summaries.front();
   nlohmann::json block = {{"count", summaries.size()}, {"seeds", seeds}, {"dirs", dirs}};
   nlohmann::json figures = nlohmann::json::object();
-  for (const std::string& path : replica_figures()) {
-    const nlohmann::json::json_pointer ptr(path);
+  for (const HeadlineFigure& fig : headline_figures()) {
     std::vector<double> v;
     for (std::size_t k = 0; k < summaries.size(); ++k) {
-      if (!summaries[k].contains(ptr) || !summaries[k].at(ptr).is_number())
-        throw std::invalid_argument("replica " + dirs[k] + ": summary.json has no number at " + path);
-      v.push_back(summaries[k].at(ptr).get<double>());
+      double x = 0.0;
+      if (!headline_value(summaries[k], fig, x))
+        throw std::invalid_argument("replica " + dirs[k] + ": summary.json has no number at " + fig.pointer);
+      v.push_back(x);
     }
     const Spread s = spread(v);
-    out[ptr] = s.mean;
-    figures[path] = {{"mean", s.mean}, {"std", s.std}, {"values", v}};
+    out[nlohmann::json::json_pointer(fig.pointer)] = s.mean;
+    figures[fig.pointer] = {{"mean", s.mean}, {"std", s.std}, {"values", v}};
   }
   block["figures"] = figures;
   block["note"] =

@@ -8,16 +8,14 @@
 
 namespace centrec::runs {
 
-// The headline figures whose spread is reported, as JSON pointers into a run's summary.json.
-const std::vector<std::string>& replica_figures();
-
 // Mean and sample standard deviation (N - 1; 0 for one value) of values.
 struct Spread {
   double mean = 0.0, std = 0.0;
 };
 Spread spread(const std::vector<double>& values);
 
-// The combined summary: replica 0's summary.json with every figure of replica_figures()
+// The combined summary: replica 0's summary.json with every figure of headline_figures()
+// (runs/headline_figures.hpp)
 // replaced by its mean over the replicas, dem.steady true only if every replica was steady,
 // the warnings of all replicas, and a "replicas" block: count, seeds, dirs and, per
 // figure, mean, std and the values in seed order. Throws std::invalid_argument if a

@@ -23,6 +23,7 @@ const std::string kCase = std::string(CENTREC_SOURCE_DIR) + "/tests/coupling/sma
 nlohmann::json fake_summary(double t_out, double eff, double k, bool steady) {
   return {{"T_out_K", t_out},
           {"efficiency", eff},
+          {"mass_flow_kg_s", 0.0357},
           {"k_eff", {{"film_mean", {{"k_eff", k}, {"bed_conduction", 0.2}, {"radiation", 0.3}, {"mixing", k - 0.5}}}}},
           {"film", {{"mean_thickness_d", 4.0}}},
           {"coupling", {{"flow_closure_mean", 1.01}, {"imposed_velocity_factor", 1.1}}},

@@ -1,0 +1,23 @@
+#pragma once
+// The headline figures of a coupled run (docs/outputs.md "Sweep"): one list says where each
+// sits in summary.json, its column in sweep.csv and its unit, so that the replicas' spread,
+// the sweep's table and its JSON rows all report the same figures under the same names.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace centrec::runs {
+
+struct HeadlineFigure {
+  std::string pointer;  // JSON pointer into a run's summary.json
+  std::string column;   // its sweep.csv column and sweep.json key (<column>_std with --replicas)
+  std::string unit;     // "-" for a ratio
+};
+
+const std::vector<HeadlineFigure>& headline_figures();
+
+// The figure's number in a summary.json, or false where the summary has none there (a
+// thermal-only run has no DEM figures).
+bool headline_value(const nlohmann::json& summary, const HeadlineFigure& f, double& out);
+
+}  // namespace centrec::runs
