@@ -22,7 +22,7 @@ void split_profiles(const std::vector<std::vector<film::ProfileBin>>& p, std::ve
 }
 }  // namespace
 
-DemFilmAverages dem_film_averages(const dem::scene::FilmFields& ff, const dem::scene::SceneConfig& scene,
+DemFilmAverages dem_film_averages(const dem::scene::SampledFilm& ff, const dem::scene::SceneConfig& scene,
                                   const std::vector<dem::scene::MassFlowSample>& mass_flow, double flow_window_turns,
                                   double steady_tolerance) {
   if (ff.snapshots == 0)

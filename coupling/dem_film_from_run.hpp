@@ -15,7 +15,7 @@ namespace centrec::coupling {
 // flow_window_turns, steady_tolerance: the window over which the measured flow is averaged
 // and the tolerance of its steadiness (run.flow_window_turns, run.steady_tolerance).
 // Throws std::invalid_argument naming the first missing or inconsistent item.
-DemFilmAverages dem_film_averages(const dem::scene::FilmFields& fields, const dem::scene::SceneConfig& scene,
+DemFilmAverages dem_film_averages(const dem::scene::SampledFilm& fields, const dem::scene::SceneConfig& scene,
                                   const std::vector<dem::scene::MassFlowSample>& mass_flow, double flow_window_turns,
                                   double steady_tolerance);
 

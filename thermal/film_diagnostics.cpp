@@ -84,13 +84,13 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
   return b;
 }
 
-FilmFields FilmOperator::fields(double t, const double* y) {
+ThermalFields FilmOperator::fields(double t, const double* y) {
   const FilmGrid& g = grid_;
   const long n = size();
   const Inputs in = inputs_at(t);
   for (long p = 0; p < n; ++p) props_[p] = props(static_cast<int>(p), y[p]);
   if (cavity_) update_cavity(y, in);
-  FilmFields f;
+  ThermalFields f;
   f.T.assign(y, y + n);
   f.k_n.resize(n);
   f.k_bed.resize(n);

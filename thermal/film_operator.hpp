@@ -58,8 +58,8 @@ struct FilmBalance {
   double receiver_residual = 0.0;
 };
 
-// Fields for output, per cell [nz * nxi] unless noted.
-struct FilmFields {
+// The solved film's temperature and heat-flow fields for output, per cell [nz * nxi] unless noted.
+struct ThermalFields {
   std::vector<double> T, k_n, k_bed, k_rad, k_mix;
   std::vector<double> T_surface, q_absorbed, q_emitted, q_convected, q_wall;  // per column [nz], W/m2
   // Cavity model: enclosure surfaces (rings, back plate, front annulus), per surface.
@@ -93,7 +93,7 @@ class FilmOperator : public OdeSystem {
   void freeze_inputs(bool frozen) { frozen_ = frozen; }
 
   FilmBalance balance(double t, const double* y);
-  FilmFields fields(double t, const double* y);
+  ThermalFields fields(double t, const double* y);
   std::vector<KeffSection> keff_sections(const double* y) const;
 
   const FilmGrid& grid() const { return grid_; }

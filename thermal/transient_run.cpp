@@ -10,7 +10,7 @@ TransientSample sample(FilmOperator& op, double t, const std::vector<double>& y)
   TransientSample s;
   s.t = t;
   s.balance = op.balance(t, y.data());
-  const FilmFields f = op.fields(t, y.data());
+  const ThermalFields f = op.fields(t, y.data());
   s.T_surface_max = *std::max_element(f.T_surface.begin(), f.T_surface.end());
   return s;
 }

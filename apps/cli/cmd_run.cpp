@@ -2,23 +2,23 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <thread>
 #include <stdexcept>
+#include <thread>
 
 #include "cli/case_overrides.hpp"
 #include "cli/child_processes.hpp"
 #include "cli/command_line.hpp"
-#include "cli/plot_scripts.hpp"
 #include "cli/commands.hpp"
+#include "cli/plot_scripts.hpp"
 #include "config/case_file.hpp"
 #include "io/atomic_write.hpp"
 #include "io/summary_json.hpp"
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
 #include "runs/headline_figures.hpp"
+#include "runs/interrupt.hpp"
 #include "runs/provenance.hpp"
 #include "runs/replica_summary.hpp"
-#include "runs/interrupt.hpp"
 #include "runs/thermal_output.hpp"
 
 namespace centrec::cli {
@@ -106,8 +106,9 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
   std::fflush(stdout);
   const int failed = run_child_jobs(jobs, parallel, nullptr, [&](std::size_t k) {
     std::printf("  replica %zu (seed %llu): %s\n", k, static_cast<unsigned long long>(seeds[k]),
-                jobs[k].status == 0 ? "done" : ("FAILED (exit " + std::to_string(jobs[k].status) + "), see " +
-                                                jobs[k].log).c_str());
+                jobs[k].status == 0
+                    ? "done"
+                    : ("FAILED (exit " + std::to_string(jobs[k].status) + "), see " + jobs[k].log).c_str());
     std::fflush(stdout);
   });
   if (failed) {
@@ -189,14 +190,16 @@ int cmd_run(const Args& args) {
                 sd.slice.enabled ? "slice of the drum" : "drum", sd.drum.diameter,
                 sd.drum.diameter / sd.particle.diameter, coupling::rad_per_s_to_rpm(sd.drum.omega));
     std::printf("  DEM steady state: %s\n", r.averages.steady_text.c_str());
-    std::printf("  film (%s mapping): %.2f d thick %s; eqs 4-7 thickness %.2f d; moving zone %.0f %% of the "
-                "circumference\n",
-                r.mapping.mapping.c_str(), runs::film_thickness(r).mean_d, r.mapping.text.c_str(),
-                r.dem_summary.value("mean_film_thickness_d", 0.0), 100.0 * r.averages.moving_fraction);
-    std::printf("  flux closure: the film carries %.1f %% of the measured %.4g g/s (sections %.1f-%.1f %%, tolerance "
-                "%.0f %%)\n",
-                100.0 * r.closure.mean_over_measured, r.averages.mdot * 1e3, 100.0 * r.closure.min_over_measured,
-                100.0 * r.closure.max_over_measured, 100.0 * coupling::kFlowClosureTolerance);
+    std::printf(
+        "  film (%s mapping): %.2f d thick %s; eqs 4-7 thickness %.2f d; moving zone %.0f %% of the "
+        "circumference\n",
+        r.mapping.mapping.c_str(), runs::film_thickness(r).mean_d, r.mapping.text.c_str(),
+        r.dem_summary.value("mean_film_thickness_d", 0.0), 100.0 * r.averages.moving_fraction);
+    std::printf(
+        "  flux closure: the film carries %.1f %% of the measured %.4g g/s (sections %.1f-%.1f %%, tolerance "
+        "%.0f %%)\n",
+        100.0 * r.closure.mean_over_measured, r.averages.mdot * 1e3, 100.0 * r.closure.min_over_measured,
+        100.0 * r.closure.max_over_measured, 100.0 * coupling::kFlowClosureTolerance);
   }
   if (r.has_receiver)
     std::printf("  scaled up to the receiver D = %.4g m, L = %.4g m, %.2f rpm: z x %.4g\n", r.receiver.op.diameter,
@@ -211,8 +214,10 @@ int cmd_run(const Args& args) {
   std::printf("  k_eff %.4g W/(m K) = bed %.4g + radiation %.4g + mixing %.4g\n", k_mean(&thermal::KeffSection::k_eff),
               k_mean(&thermal::KeffSection::bed_conduction), k_mean(&thermal::KeffSection::radiation),
               k_mean(&thermal::KeffSection::mixing));
-  std::printf("  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote %s/{summary.json,results.h5,results.xmf,film.h5}\n",
-              r.dem_seconds, r.mapping_seconds, r.thermal_seconds, out_dir.c_str());
+  std::printf(
+      "  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote "
+      "%s/{summary.json,results.h5,results.xmf,film.h5}\n",
+      r.dem_seconds, r.mapping_seconds, r.thermal_seconds, out_dir.c_str());
   if (plots) {
     std::vector<std::string> plot_args = {out_dir};
     if (r.film_from_dem()) plot_args.insert(plot_args.end(), {"--dem", r.dem_dir});

@@ -11,13 +11,13 @@
 
 #include "cli/child_processes.hpp"
 #include "cli/command_line.hpp"
-#include "cli/plot_scripts.hpp"
 #include "cli/commands.hpp"
+#include "cli/plot_scripts.hpp"
 #include "config/case_file.hpp"
-#include "io/atomic_write.hpp"
-#include "io/summary_json.hpp"
 #include "config/case_receiver.hpp"
 #include "coupling/scaling_laws.hpp"
+#include "io/atomic_write.hpp"
+#include "io/summary_json.hpp"
 #include "runs/headline_figures.hpp"
 
 namespace centrec::cli {

@@ -11,7 +11,7 @@ namespace centrec::io {
 
 namespace {
 
-using dem::scene::FilmFields;
+using dem::scene::SampledFilm;
 using dem::scene::MassFlowSample;
 
 // The schema of /mass_flow and /film: each dataset once, with its unit, its dimension scale
@@ -59,50 +59,50 @@ struct FilmColumn {
   const char* units;
   const char* scale;
   const char* scale_label;
-  std::vector<double> (*get)(const FilmFields&);
-  void (*set)(FilmFields&, const std::vector<double>&);
+  std::vector<double> (*get)(const SampledFilm&);
+  void (*set)(SampledFilm&, const std::vector<double>&);
 };
 const FilmColumn kFilmColumns[] = {
-    {"section_z", "m", "", "", [](const FilmFields& f) { return f.section_z; },
-     [](FilmFields& f, const std::vector<double>& x) { f.section_z = x; }},
+    {"section_z", "m", "", "", [](const SampledFilm& f) { return f.section_z; },
+     [](SampledFilm& f, const std::vector<double>& x) { f.section_z = x; }},
     {"thickness_mean", "m", "section_z", "z",
-     [](const FilmFields& f) { return each(f.section_thickness, &film::LengthStat::mean_m); },
-     [](FilmFields& f, const std::vector<double>& x) { fill(f.section_thickness, x, &film::LengthStat::mean_m); }},
+     [](const SampledFilm& f) { return each(f.section_thickness, &film::LengthStat::mean_m); },
+     [](SampledFilm& f, const std::vector<double>& x) { fill(f.section_thickness, x, &film::LengthStat::mean_m); }},
     {"thickness_std", "m", "section_z", "z",
-     [](const FilmFields& f) { return each(f.section_thickness, &film::LengthStat::std_m); },
-     [](FilmFields& f, const std::vector<double>& x) { fill(f.section_thickness, x, &film::LengthStat::std_m); }},
-    {"bin_theta", "rad", "", "", [](const FilmFields& f) { return f.bin_theta; },
-     [](FilmFields& f, const std::vector<double>& x) { f.bin_theta = x; }},
-    {"surface_axial_velocity", "m/s", "bin_theta", "theta", [](const FilmFields& f) { return f.surface_velocity; },
-     [](FilmFields& f, const std::vector<double>& x) { f.surface_velocity = x; }},
+     [](const SampledFilm& f) { return each(f.section_thickness, &film::LengthStat::std_m); },
+     [](SampledFilm& f, const std::vector<double>& x) { fill(f.section_thickness, x, &film::LengthStat::std_m); }},
+    {"bin_theta", "rad", "", "", [](const SampledFilm& f) { return f.bin_theta; },
+     [](SampledFilm& f, const std::vector<double>& x) { f.bin_theta = x; }},
+    {"surface_axial_velocity", "m/s", "bin_theta", "theta", [](const SampledFilm& f) { return f.surface_velocity; },
+     [](SampledFilm& f, const std::vector<double>& x) { f.surface_velocity = x; }},
     {"moving_zone_of_bin", "1", "bin_theta", "theta",
-     [](const FilmFields& f) { return std::vector<double>(f.zones.zone_of_bin.begin(), f.zones.zone_of_bin.end()); },
-     [](FilmFields& f, const std::vector<double>& x) {
+     [](const SampledFilm& f) { return std::vector<double>(f.zones.zone_of_bin.begin(), f.zones.zone_of_bin.end()); },
+     [](SampledFilm& f, const std::vector<double>& x) {
        f.zones.zone_of_bin.clear();
        for (double z : x) f.zones.zone_of_bin.push_back(z > 0.5 ? 1 : 0);
      }},
-    {"arc_theta", "rad", "", "", [](const FilmFields& f) { return each(f.arcs, &film::ArcSection::theta); }, nullptr},
+    {"arc_theta", "rad", "", "", [](const SampledFilm& f) { return each(f.arcs, &film::ArcSection::theta); }, nullptr},
     {"arc_z_over_length", "1", "", "",
-     [](const FilmFields& f) { return each(f.arcs, &film::ArcSection::z_over_length); }, nullptr},
-    {"wall_distance_d", "d", "", "", [](const FilmFields& f) { return f.bin_centre_d; },
-     [](FilmFields& f, const std::vector<double>& x) { f.bin_centre_d = x; }},
+     [](const SampledFilm& f) { return each(f.arcs, &film::ArcSection::z_over_length); }, nullptr},
+    {"wall_distance_d", "d", "", "", [](const SampledFilm& f) { return f.bin_centre_d; },
+     [](SampledFilm& f, const std::vector<double>& x) { f.bin_centre_d = x; }},
     {"dispersion", "m2/s", "wall_distance_d", "wall distance",
-     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::coefficient); },
-     [](FilmFields& f, const std::vector<double>& x) { fill(f.dispersion, x, &film::DispersionBin::coefficient); }},
+     [](const SampledFilm& f) { return each(f.dispersion, &film::DispersionBin::coefficient); },
+     [](SampledFilm& f, const std::vector<double>& x) { fill(f.dispersion, x, &film::DispersionBin::coefficient); }},
     {"dispersion_std", "m2/s", "wall_distance_d", "wall distance",
-     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::coefficient_std); },
-     [](FilmFields& f, const std::vector<double>& x) { fill(f.dispersion, x, &film::DispersionBin::coefficient_std); }},
+     [](const SampledFilm& f) { return each(f.dispersion, &film::DispersionBin::coefficient_std); },
+     [](SampledFilm& f, const std::vector<double>& x) { fill(f.dispersion, x, &film::DispersionBin::coefficient_std); }},
     {"dispersion_drift", "m/s", "wall_distance_d", "wall distance",
-     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::drift); }, nullptr},
+     [](const SampledFilm& f) { return each(f.dispersion, &film::DispersionBin::drift); }, nullptr},
     {"dispersion_fit_lag_min", "s", "wall_distance_d", "wall distance",
-     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::fit_lag_min); }, nullptr},
+     [](const SampledFilm& f) { return each(f.dispersion, &film::DispersionBin::fit_lag_min); }, nullptr},
     {"dispersion_fit_lag_max", "s", "wall_distance_d", "wall distance",
-     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::fit_lag_max); }, nullptr},
+     [](const SampledFilm& f) { return each(f.dispersion, &film::DispersionBin::fit_lag_max); }, nullptr},
     {"dispersion_crossing_time", "s", "wall_distance_d", "wall distance",
-     [](const FilmFields& f) { return each(f.dispersion, &film::DispersionBin::crossing_time); }, nullptr},
-    {"dispersion_lags", "s", "", "", [](const FilmFields& f) { return f.dispersion_lags; }, nullptr},
-    {"ring_z", "m", "", "", [](const FilmFields& f) { return f.ring_z; },
-     [](FilmFields& f, const std::vector<double>& x) { f.ring_z = x; }},
+     [](const SampledFilm& f) { return each(f.dispersion, &film::DispersionBin::crossing_time); }, nullptr},
+    {"dispersion_lags", "s", "", "", [](const SampledFilm& f) { return f.dispersion_lags; }, nullptr},
+    {"ring_z", "m", "", "", [](const SampledFilm& f) { return f.ring_z; },
+     [](SampledFilm& f, const std::vector<double>& x) { f.ring_z = x; }},
 };
 
 // /film profiles [rows][wall-distance bins] as <name>_mean, _std (units) and _turns (the
@@ -110,30 +110,30 @@ const FilmColumn kFilmColumns[] = {
 struct FilmProfile {
   const char* name;
   const char* units;
-  std::vector<std::vector<film::ProfileBin>> FilmFields::*member;
+  std::vector<std::vector<film::ProfileBin>> SampledFilm::*member;
   const char* row_scales[2][2];  // {dataset, label}, up to two ("" = none)
   bool read;
 };
 const FilmProfile kFilmProfiles[] = {
-    {"axial_velocity", "m/s", &FilmFields::velocity_profiles, {{"arc_theta", "arc theta"}, {"arc_z_over_length", "arc z/L"}}, false},
-    {"solid_fraction", "1", &FilmFields::solid_fraction, {{"", ""}, {"", ""}}, false},
-    {"ring_solid_fraction", "1", &FilmFields::ring_solid_fraction, {{"ring_z", "z"}, {"", ""}}, true},
-    {"ring_volume_flux", "m/s", &FilmFields::ring_volume_flux, {{"ring_z", "z"}, {"", ""}}, true},
+    {"axial_velocity", "m/s", &SampledFilm::velocity_profiles, {{"arc_theta", "arc theta"}, {"arc_z_over_length", "arc z/L"}}, false},
+    {"solid_fraction", "1", &SampledFilm::solid_fraction, {{"", ""}, {"", ""}}, false},
+    {"ring_solid_fraction", "1", &SampledFilm::ring_solid_fraction, {{"ring_z", "z"}, {"", ""}}, true},
+    {"ring_volume_flux", "m/s", &SampledFilm::ring_volume_flux, {{"ring_z", "z"}, {"", ""}}, true},
 };
 
 // /film number attributes.
 struct FilmNumber {
   const char* name;
-  double (*get)(const FilmFields&);
-  void (*set)(FilmFields&, double);
+  double (*get)(const SampledFilm&);
+  void (*set)(SampledFilm&, double);
 };
 const FilmNumber kFilmNumbers[] = {
-    {"sampled_turns", [](const FilmFields& f) { return static_cast<double>(f.turns); },
-     [](FilmFields& f, double v) { f.turns = static_cast<std::size_t>(v); }},
-    {"snapshots", [](const FilmFields& f) { return static_cast<double>(f.snapshots); },
-     [](FilmFields& f, double v) { f.snapshots = static_cast<std::size_t>(v); }},
-    {"mean_thickness_m", [](const FilmFields& f) { return f.mean_thickness.mean_m; }, nullptr},
-    {"mean_thickness_std_m", [](const FilmFields& f) { return f.mean_thickness.std_m; }, nullptr},
+    {"sampled_turns", [](const SampledFilm& f) { return static_cast<double>(f.turns); },
+     [](SampledFilm& f, double v) { f.turns = static_cast<std::size_t>(v); }},
+    {"snapshots", [](const SampledFilm& f) { return static_cast<double>(f.snapshots); },
+     [](SampledFilm& f, double v) { f.snapshots = static_cast<std::size_t>(v); }},
+    {"mean_thickness_m", [](const SampledFilm& f) { return f.mean_thickness.mean_m; }, nullptr},
+    {"mean_thickness_std_m", [](const SampledFilm& f) { return f.mean_thickness.std_m; }, nullptr},
 };
 
 const char* const kProfileParts[] = {"_mean", "_std", "_turns"};
@@ -169,7 +169,7 @@ void write_profile(H5File& f, const FilmProfile& p, const std::vector<std::vecto
   f.write(path + "_turns", periods, {n, cols}, "1");
 }
 
-void write_film(H5File& f, const FilmFields& ff) {
+void write_film(H5File& f, const SampledFilm& ff) {
   if (ff.snapshots == 0) return;
   f.create_group("/film");
   for (const FilmNumber& a : kFilmNumbers) f.set_attribute("/film", a.name, a.get(ff));
@@ -352,8 +352,8 @@ std::vector<dem::scene::MassFlowSample> read_mass_flow_log(const H5File& f) {
   return log;
 }
 
-dem::scene::FilmFields read_film_fields(const H5File& f) {
-  FilmFields ff;
+dem::scene::SampledFilm read_film_fields(const H5File& f) {
+  SampledFilm ff;
   for (const FilmNumber& a : kFilmNumbers)
     if (a.set) a.set(ff, f.number_attribute("/film", a.name));
   for (const FilmColumn& c : kFilmColumns)

@@ -26,9 +26,9 @@ void write_dem_h5(const std::string& dir, const Provenance& provenance, const de
                   const DemRunResult& run);
 
 // Read back from an open dem.h5 by the same schema lists that write it: /mass_flow whole,
-// and of /film what the coupling uses (dem/scene/scene_sampler.hpp FilmFields; the rest
+// and of /film what the coupling uses (dem/scene/scene_sampler.hpp SampledFilm; the rest
 // stays empty). Throw std::runtime_error naming the missing or inconsistent dataset.
 std::vector<dem::scene::MassFlowSample> read_mass_flow_log(const H5File& f);
-dem::scene::FilmFields read_film_fields(const H5File& f);
+dem::scene::SampledFilm read_film_fields(const H5File& f);
 
 }  // namespace centrec::io

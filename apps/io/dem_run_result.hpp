@@ -50,7 +50,7 @@ struct DemRunResult {
   std::int64_t neighbour_rebuilds = -1, list_edits = -1;  // this process's (< 0: unknown)
   double pair_pass_idle = 0.0, parked_pass_idle = 0.0;   // s of force_pass threads waited (EngineTimes)
   std::vector<dem::scene::ControllerWindow> controller;  // slice holdup controller windows
-  dem::scene::FilmFields fields;
+  dem::scene::SampledFilm fields;
   std::vector<NamedSnapshot> snapshots;
   int snapshot_stride = 1;  // every k-th sampled snapshot kept in `snapshots`
 };

@@ -48,11 +48,14 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
   CoupledRun r;
   r.thermal = *cf.thermal;
   if (!o.dem_from.empty() && (!r.film_from_dem() || o.overrides.any_operating_point() || o.overrides.seed))
-    throw std::invalid_argument(cf.path + ": --dem-from takes the film of an earlier DEM run as it ran; it goes with "
-                                          "neither a case without a DEM film nor --speed-rpm, --mass-flow or --seed");
+    throw std::invalid_argument(cf.path +
+                                ": --dem-from takes the film of an earlier DEM run as it ran; it goes with "
+                                "neither a case without a DEM film nor --speed-rpm, --mass-flow or --seed");
   if (!r.film_from_dem() && o.overrides.any_operating_point())
-    throw std::invalid_argument(cf.path + ": --speed-rpm / --mass-flow change the DEM, but this case takes its film "
-                                          "from " + r.thermal.film_source.text() + " (no DEM to rerun)");
+    throw std::invalid_argument(cf.path +
+                                ": --speed-rpm / --mass-flow change the DEM, but this case takes its film "
+                                "from " +
+                                r.thermal.film_source.text() + " (no DEM to rerun)");
   if (r.film_from_dem()) {
     if (!cf.dem) throw std::invalid_argument(cf.path + ": give a `dem:` section or `film: {file: ...}`");
     effective_dem(cf, o, r);
@@ -63,8 +66,8 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
                     o.allow_small_drum, "--allow-small-drum", cf.path);
     // 1. DEM, or its cached outputs.
     const auto t0 = std::chrono::steady_clock::now();
-    // A DEM run now hands its film over in memory; a cached or given one is read back from
-    // its dem.h5.
+    // A DEM run hands its film over in memory (no write and read back of dem.h5 on the way);
+    // a cached or given one is read back from its dem.h5.
     std::optional<io::DemRunResult> ran;
     if (!o.dem_from.empty()) {
       r.dem_given = true;
@@ -86,10 +89,10 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
     // 2. Mapping, scale-up, mass-flux conservation.
     const auto t1 = std::chrono::steady_clock::now();
     try {
-      r.averages = ran ? coupling::dem_film_averages(ran->fields, r.dem.scene, ran->mass_flow, r.dem.run.flow_window_turns,
-                                                   r.dem.run.steady_tolerance)
-                     : io::read_dem_film(r.dem_dir + "/dem.h5", r.dem.scene, r.dem.run.flow_window_turns,
-                                         r.dem.run.steady_tolerance);
+      r.averages = ran ? coupling::dem_film_averages(ran->fields, r.dem.scene, ran->mass_flow,
+                                                     r.dem.run.flow_window_turns, r.dem.run.steady_tolerance)
+                       : io::read_dem_film(r.dem_dir + "/dem.h5", r.dem.scene, r.dem.run.flow_window_turns,
+                                           r.dem.run.steady_tolerance);
     } catch (const std::exception& e) {
       // The usual cause: no film formed (too slow a drum for this retention, too short a run).
       const auto op = config::dem_operating_point(r.dem);
@@ -97,10 +100,12 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
                                std::to_string(coupling::centrifugal_ratio(op)) + " and ended with a holdup of " +
                                std::to_string(r.dem_summary.value("holdup_kg", 0.0) * 1e3) + " g");
     }
-    allow_or_refuse(r, r.averages.steady ? "" : "the DEM film is not at steady flow: " + r.averages.steady_text +
-                                                     " (tolerance run.steady_tolerance = " +
-                                                     std::to_string(r.dem.run.steady_tolerance) +
-                                                     "; lengthen run.duration or run.max_extension)",
+    allow_or_refuse(r,
+                    r.averages.steady
+                        ? ""
+                        : "the DEM film is not at steady flow: " + r.averages.steady_text +
+                              " (tolerance run.steady_tolerance = " + std::to_string(r.dem.run.steady_tolerance) +
+                              "; lengthen run.duration or run.max_extension)",
                     o.allow_unsteady, "--allow-unsteady", r.dem_dir);
     coupling::FilmMappingResult mapped = coupling::film_mapping(r.thermal.film_source.mapping).map(r.averages);
     r.mapping = std::move(mapped.report);
@@ -108,9 +113,11 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
     // The flow the film carries, against the DEM's measured flow, at the DEM's scale.
     r.closure = coupling::flow_closure(film, r.averages.particle_density, r.averages.mdot);
     const double miss = r.closure.mean_over_measured - 1.0;
-    allow_or_refuse(r, std::abs(miss) <= coupling::kFlowClosureTolerance ? "" : "the mapped film carries " +
-                           std::to_string(100.0 * r.closure.mean_over_measured) +
-                           " % of the DEM's measured flow (closure tolerance 5 %)",
+    allow_or_refuse(r,
+                    std::abs(miss) <= coupling::kFlowClosureTolerance
+                        ? ""
+                        : "the mapped film carries " + std::to_string(100.0 * r.closure.mean_over_measured) +
+                              " % of the DEM's measured flow (closure tolerance 5 %)",
                     o.allow_unsteady, "--allow-unsteady", r.dem_dir);
     // The case's flow: the receiver's, or the DEM's own target (feed or slice target).
     double mdot = dem::scene::target_mass_flow(r.dem.scene);

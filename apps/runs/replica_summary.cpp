@@ -42,7 +42,8 @@ nlohmann::json combine_replicas(const std::vector<nlohmann::json>& summaries, co
   block["figures"] = figures;
   block["note"] =
       "the figures listed here are, at the top level of this file, their means over the replicas; every other "
-      "entry is replica 0's (seed " + std::to_string(seeds.front()) + "); std is the sample standard deviation (N - 1)";
+      "entry is replica 0's (seed " +
+      std::to_string(seeds.front()) + "); std is the sample standard deviation (N - 1)";
   bool steady = true;
   std::set<std::string> warnings;
   for (const auto& s : summaries) {

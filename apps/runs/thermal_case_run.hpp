@@ -15,7 +15,7 @@ struct ThermalRun {
   std::unique_ptr<thermal::FilmOperator> op;
   thermal::SteadyResult steady;
   thermal::FilmBalance balance;          // at the steady state
-  thermal::FilmFields fields;            // at the steady state
+  thermal::ThermalFields fields;            // at the steady state
   std::vector<thermal::KeffSection> keff;
   double steady_seconds = 0.0;           // wall time of the steady solve
   bool has_transient = false;

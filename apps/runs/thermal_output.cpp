@@ -170,7 +170,7 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
     }
   f.write("/grid/points", points, {nz * nxi, 3}, "m");
   f.write_int64("/grid/quads", quads, {quads.size() / 4, 4}, "1");
-  const thermal::FilmFields& fl = r.fields;
+  const thermal::ThermalFields& fl = r.fields;
   f.write("/steady/T", fl.T, {nz, nxi}, "K");
   f.write("/steady/k_n", fl.k_n, {nz, nxi}, "W/(m K)");
   f.write("/steady/k_bed", fl.k_bed, {nz, nxi}, "W/(m K)");

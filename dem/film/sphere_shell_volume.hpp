@@ -9,7 +9,7 @@
 // changes form (disk tangent to the circle): in closed form where the slices lie wholly
 // inside or outside, else by 12-point Gauss-Legendre after a sine substitution that
 // smooths the tangency. Accuracy: better than 1e-6 of the sphere volume
-// (tests/film/test_sphere_shell_volume.cpp checks it against the flat-wall cap formula
+// (tests/film/test_solid_fraction.cpp checks it against the flat-wall cap formula
 // and Monte Carlo). Curvature of the wall is kept; nothing assumes D >> d.
 namespace centrec::film {
 

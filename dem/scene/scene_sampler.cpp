@@ -131,8 +131,8 @@ void SceneSampler::end_turn() {
   ++turns_;
 }
 
-FilmFields SceneSampler::fields() const {
-  FilmFields f;
+SampledFilm SceneSampler::fields() const {
+  SampledFilm f;
   f.turns = turns_;
   f.snapshots = snapshots_;
   if (snapshots_ == 0) return f;

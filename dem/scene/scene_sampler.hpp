@@ -34,7 +34,9 @@ struct SamplingSpec {
 using SnapshotArrays = film::ParticleColumns;
 SnapshotArrays take_snapshot(const Simulation& sim);
 
-struct FilmFields {
+// The film as the sampler measured it over the sampled turns (docs/film_sampling.md): what
+// dem.h5 /film holds and the coupling reads.
+struct SampledFilm {
   std::size_t turns = 0, snapshots = 0;
   film::LengthStat mean_thickness;                    // whole film
   std::vector<double> section_z;                      // m, axial section centres
@@ -76,7 +78,7 @@ class SceneSampler {
   void add_snapshot(SnapshotArrays s);
   // Closes the current turn (one period of the velocity and solid-fraction samplers).
   void end_turn();
-  FilmFields fields() const;
+  SampledFilm fields() const;
   const film::DrumFrame& frame() const { return frame_; }
   const SamplingSpec& spec() const { return spec_; }
   // Checkpoints: every accumulator as one array; load() into a sampler built for the same

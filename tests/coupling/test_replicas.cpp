@@ -42,9 +42,10 @@ TEST(Replicas, SpreadIsTheSampleStandardDeviation) {
 }
 
 TEST(Replicas, CombinedSummaryHoldsMeansAndSpread) {
-  const auto c = centrec::runs::combine_replicas(
-      {fake_summary(1100.0, 0.90, 0.9, true), fake_summary(1110.0, 0.92, 1.0, false), fake_summary(1120.0, 0.94, 1.1, true)},
-      {5, 6, 7}, {"a", "b", "c"});
+  const auto c =
+      centrec::runs::combine_replicas({fake_summary(1100.0, 0.90, 0.9, true), fake_summary(1110.0, 0.92, 1.0, false),
+                                       fake_summary(1120.0, 0.94, 1.1, true)},
+                                      {5, 6, 7}, {"a", "b", "c"});
   EXPECT_DOUBLE_EQ(c["T_out_K"].get<double>(), 1110.0);
   EXPECT_NEAR(c["efficiency"].get<double>(), 0.92, 1e-15);
   EXPECT_NEAR(c["k_eff"]["film_mean"]["k_eff"].get<double>(), 1.0, 1e-15);

@@ -33,7 +33,7 @@ TEST(DispersionScene, DenseShearedSliceWithinPublishedRange) {
   SamplingSpec spec;
   SceneSampler sampler(scene, spec);
   sampler.sample_turns(scene, 2);
-  const FilmFields f = sampler.fields();
+  const SampledFilm f = sampler.fields();
   const double d = c.particle.diameter, w = spec.bin_width_d * d;
   const auto& phi = f.ring_solid_fraction.at(0);
   const auto& flux = f.ring_volume_flux.at(0);

@@ -63,7 +63,7 @@ TEST(DispersionScene, SubSamplesLeaveTheTrajectoryBitwiseTheSame) {
   EXPECT_GT(plain.feeder_stats().inserted, 0);
   // The bursts did sample: 2 ms apart, every lag of the 11 samples per interval seen.
   sampler.end_turn();
-  const FilmFields f = sampler.fields();
+  const SampledFilm f = sampler.fields();
   ASSERT_FALSE(f.dispersion_lags.empty());
   EXPECT_NEAR(f.dispersion_lags[0], 2e-3, 1e-12);
   std::size_t seen = 0;

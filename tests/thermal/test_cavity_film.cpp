@@ -119,7 +119,7 @@ TEST(CavityFilm, FrontPlateTakesItsOwnSurfaceAndInsulation) {
     FilmOperator op(film, m, spec);
     const SteadyResult r = steady(op);
     const FilmBalance b = op.balance(0.0, r.y.data());
-    const FilmFields f = op.fields(0.0, r.y.data());
+    const ThermalFields f = op.fields(0.0, r.y.data());
     print_balance(p.label, b);
     // Surfaces: rings, back plate, front plate (the last written).
     const double T_back = f.cavity_T[f.cavity_T.size() - 2], T_plate = f.cavity_T.back();

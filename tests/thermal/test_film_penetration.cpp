@@ -36,7 +36,7 @@ TEST(FilmPenetration, SurfaceFollowsSemiInfiniteSolutionNearInletThenDeparts) {
   FilmOperator op(analytic_film(a), m, spec);
   op.freeze_inputs(true);
   const SteadyResult r = solve_steady(op, op.uniform_state(m.T_in), SteadySettings{});
-  const FilmFields f = op.fields(0.0, r.y.data());
+  const ThermalFields f = op.fields(0.0, r.y.data());
   const double rho_c = m.material.rho_s * a.phi * m.heat.cp_constant;
   const double diff = m.conductivity.k_constant / rho_c;
   const double qa = m.material.alpha * m.flux.q;

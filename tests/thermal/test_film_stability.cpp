@@ -43,7 +43,7 @@ TEST(FilmStability, CellPeclet1e4StaysWithinPhysicalBounds) {
     FilmOperator op(analytic_film(a), m, spec);
     op.freeze_inputs(true);
     const SteadyResult r = solve_steady(op, op.uniform_state(T0), SteadySettings{});
-    const FilmFields f = op.fields(0.0, r.y.data());
+    const ThermalFields f = op.fields(0.0, r.y.data());
     const double lo = *std::min_element(r.y.begin(), r.y.end());
     const double hi = std::max(*std::max_element(r.y.begin(), r.y.end()),
                                *std::max_element(f.T_surface.begin(), f.T_surface.end()));

@@ -187,7 +187,7 @@ TEST(SolarExtinction, OperatorTakesTheLocalDepth) {
     op.freeze_inputs(true);
     const SteadyResult s = solve_steady(op, op.uniform_state(x.T_in), SteadySettings{});
     const FilmBalance b = op.balance(0.0, s.y.data());
-    const FilmFields fl = op.fields(0.0, s.y.data());
+    const ThermalFields fl = op.fields(0.0, s.y.data());
     return std::make_pair(b, *std::max_element(fl.T_surface.begin(), fl.T_surface.end()));
   };
   const FilmField uniform = tc::plug_film(6e-3, 0.05, 0.55, 1.0, 1.0);
