@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "cli/command_line.hpp"
+#include "config/shared_ranges.hpp"
 
 namespace centrec::cli {
 
@@ -26,37 +27,36 @@ struct Flag {
   std::string (*given)(const config::Overrides& o);  // the value as given, "" = not given
 };
 
-// The ranges of run.threads, run.duration, receiver.speed_rpm, receiver.mass_flow and dem.seed
-// (config/case_dem.cpp, config/case_receiver.cpp); the case checks then see the value as the
-// case's own.
+// The ranges are the keys' own (config/shared_ranges.hpp); the case checks then see the value
+// as the case's own.
 const Flag kFlags[] = {
     {OverrideFlag::threads, "--threads", "N", "DEM threads (0-1024, 0 = all cores) instead of dem.run.threads",
      [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
-       return app.add_option_function<int>(n, [&o](const int& v) { o.threads = v; }, h)->check(integer_in(0, 1024));
+       return app.add_option_function<int>(n, [&o](const int& v) { o.threads = v; }, h)->check(integer_in(0, config::shared_ranges::kThreadsMax));
      },
      [](const config::Overrides& o) { return o.threads ? text(*o.threads) : std::string(); }},
     {OverrideFlag::duration, "--duration", "SECONDS", "seconds of spin-up instead of dem.run.duration",
      [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
        return app.add_option_function<double>(n, [&o](const double& v) { o.duration = v; }, h)
-           ->check(number_in(config::Range::positive(), "s"));
+           ->check(number_in(config::shared_ranges::duration(), "s"));
      },
      [](const config::Overrides& o) { return o.duration ? text(*o.duration) : std::string(); }},
     {OverrideFlag::speed_rpm, "--speed-rpm", "RPM", "the receiver's speed (or, without one, the DEM drum's), rpm",
      [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
        return app.add_option_function<double>(n, [&o](const double& v) { o.speed_rpm = v; }, h)
-           ->check(number_in(config::Range::open_closed(0.0, 1e5), "rpm"));
+           ->check(number_in(config::shared_ranges::speed_rpm(), "rpm"));
      },
      [](const config::Overrides& o) { return o.speed_rpm ? text(*o.speed_rpm) : std::string(); }},
     {OverrideFlag::mass_flow, "--mass-flow", "KG_S", "the receiver's mass flow (or, without one, the DEM feeder's), kg/s",
      [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
        return app.add_option_function<double>(n, [&o](const double& v) { o.mass_flow = v; }, h)
-           ->check(number_in(config::Range::open_closed(0.0, 1e4), "kg/s"));
+           ->check(number_in(config::shared_ranges::mass_flow(), "kg/s"));
      },
      [](const config::Overrides& o) { return o.mass_flow ? text(*o.mass_flow) : std::string(); }},
     {OverrideFlag::seed, "--seed", "N", "the DEM's random seed instead of dem.seed (a replica of the same case)",
      [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
        return app.add_option_function<long long>(n, [&o](const long long& v) { o.seed = static_cast<std::uint64_t>(v); }, h)
-           ->check(integer_in(0, 2147483647));
+           ->check(integer_in(0, config::shared_ranges::kSeedMax));
      },
      [](const config::Overrides& o) { return o.seed ? text(*o.seed) : std::string(); }},
 };

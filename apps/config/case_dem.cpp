@@ -1,4 +1,5 @@
 #include "config/case_dem.hpp"
+#include "config/shared_ranges.hpp"
 
 #include <cmath>
 #include <string>
@@ -150,18 +151,18 @@ DemCase read_dem_case(MapReader root) {
 
   s.gravity = root.number("gravity", 9.81, Range::non_negative(), "m/s^2", "gravitational acceleration");
   s.seed = static_cast<std::uint64_t>(
-      root.integer("seed", 12345, 0, 2147483647L, "random seed of the feeder and the initial film"));
+      root.integer("seed", 12345, 0, shared_ranges::kSeedMax, "random seed of the feeder and the initial film"));
 
   auto run = root.child("run", "time stepping, run length, threads, progress and checkpoints");
   s.dt = run.number("dt", 0.0, Range::non_negative(), "s (0 = advised)",
                     "time step; at most the stability bound the run prints");
   s.max_impact_speed = run.number("max_impact_speed", 2.0, Range::positive(), "m/s",
                                   "impact speed the time-step advice and blow-up check assume");
-  s.threads = static_cast<int>(run.integer("threads", 0, 0, 1024, "OpenMP threads (0 = all cores)"));
+  s.threads = static_cast<int>(run.integer("threads", 0, 0, shared_ranges::kThreadsMax, "OpenMP threads (0 = all cores)"));
   s.skin = run.number("skin_d", 0.2, Range::closed(0.01, 5.0), "d (Verlet skin)",
                       "neighbour-list margin beyond contact") *
            d;
-  c.run.duration = run.number("duration", 1.0, Range::positive(), "s", "simulated spin-up time before sampling");
+  c.run.duration = run.number("duration", 1.0, shared_ranges::duration(), "s", "simulated spin-up time before sampling");
   c.run.max_extension =
       run.number("max_extension", -1.0, Range::closed(-1.0, 1e12), "s (spin-up extended until steady; -1 = run.duration)",
                  "longest extension of the spin-up past run.duration while the flow is not steady");

@@ -1,4 +1,5 @@
 #include "config/case_receiver.hpp"
+#include "config/shared_ranges.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -13,8 +14,8 @@ ReceiverSection read_receiver_section(MapReader r, bool complete) {
   ReceiverSection s;
   s.diameter = value("diameter", Range::open_closed(0.0, 100.0), "m", "the receiver's drum diameter");
   s.length = value("length", Range::open_closed(0.0, 1000.0), "m", "the receiver's drum length");
-  s.speed_rpm = value("speed_rpm", Range::open_closed(0.0, 1e5), "rpm", "the receiver's rotational speed");
-  s.mass_flow = value("mass_flow", Range::open_closed(0.0, 1e4), "kg/s", "the receiver's particle mass flow");
+  s.speed_rpm = value("speed_rpm", shared_ranges::speed_rpm(), "rpm", "the receiver's rotational speed");
+  s.mass_flow = value("mass_flow", shared_ranges::mass_flow(), "kg/s", "the receiver's particle mass flow");
   s.tilt = r.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg", "axis tilt from horizontal (as dem.drum.tilt_deg)") *
            M_PI / 180.0;
   s.dem_diameter_d = r.number("dem_diameter_d", 0.0, Range::closed(0.0, 1e5), "d (0 = use dem.drum as given)",

@@ -1,12 +1,13 @@
 #include "config/case_sweep.hpp"
+#include "config/shared_ranges.hpp"
 
 namespace centrec::config {
 
 SweepSpec read_sweep(MapReader r) {
   SweepSpec s;
-  s.speed_rpm = r.numbers("speed_rpm", {}, Range::open_closed(0.0, 1e5), "rpm",
+  s.speed_rpm = r.numbers("speed_rpm", {}, shared_ranges::speed_rpm(), "rpm",
                           "rotational speeds of the grid, at least one (the receiver's, or the DEM drum's without one)");
-  s.mass_flow = r.numbers("mass_flow", {}, Range::open_closed(0.0, 1e4), "kg/s",
+  s.mass_flow = r.numbers("mass_flow", {}, shared_ranges::mass_flow(), "kg/s",
                           "mass flows of the grid, at least one (the receiver's, or the DEM feed's without one)");
   if (s.speed_rpm.empty()) r.fail("speed_rpm", "give at least one rotational speed");
   if (s.mass_flow.empty()) r.fail("mass_flow", "give at least one mass flow");
