@@ -17,6 +17,7 @@ struct DemFilmAverages {
   double particle_diameter = 0.0;  // m
   double particle_density = 0.0;   // kg/m3
   bool slice = false;              // a periodic slice: one axial section, z-independent
+  double feed_end = 0.0;           // m from the back plate: the downstream end of the feeder region (0 = no feeder)
   double sampled_turns = 0.0;
   // Flow over the last flow window (dem/scene/mass_flow_window.hpp): measured = the outlet
   // (drum) or the axial flow (slice); target = the feed (drum) or the controller's target.

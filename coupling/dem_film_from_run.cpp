@@ -35,6 +35,7 @@ DemFilmAverages dem_film_averages(const dem::scene::SampledFilm& ff, const dem::
   a.omega = scene.drum.omega;
   a.particle_density = scene.particle.material.density;
   a.slice = scene.slice.enabled;
+  if (!a.slice && scene.feeder.enabled) a.feed_end = scene.feeder.axial_start + scene.feeder.axial_length;
   a.sampled_turns = static_cast<double>(ff.turns);
   const auto flow = dem::scene::flow_steadiness(mass_flow, scene, flow_window_turns * dem::scene::turn_period(scene),
                                                 steady_tolerance);

@@ -29,7 +29,24 @@ void fill_empty(std::vector<double>& v) {
 
 MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut) {
   a.check();
+  // A drum's sections next to the feeder and the outlet hold the small drum's own inflow
+  // and outflow (particles falling in from the feeder, the film leaving over the edge),
+  // not the developed film: the thermal film takes the sections of z/L 0.2-0.8, held
+  // toward the ends, as the solid-fraction sampler's window does.
+  std::vector<std::size_t> sections;
+  for (std::size_t i = 0; i < a.ring_z.size(); ++i) {
+    const double zl = a.ring_z[i] / a.length;
+    if (a.ring_z.size() > 1 && (zl < kDevelopedFrom || zl > kDevelopedTo)) continue;
+    sections.push_back(i);
+  }
+  return map_dem_sections(a, sections, phi_cut, FilmTop::whole_bins);
+}
+
+MappedFilm map_dem_sections(const DemFilmAverages& a, const std::vector<std::size_t>& sections, double phi_cut,
+                            FilmTop top_at) {
+  a.check();
   if (!(phi_cut > 0.0 && phi_cut < 0.74)) throw std::invalid_argument("film mapping: phi_cut must be in (0, 0.74)");
+  if (sections.empty()) throw std::invalid_argument("film mapping: no axial section selected");
   MappedFilm out;
   out.cut.phi_cut = phi_cut;
   const std::size_t nb = a.wall_distance_d.size();
@@ -55,13 +72,7 @@ MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut) {
     to.push_back(bins.back());
   };
 
-  for (std::size_t i = 0; i < a.ring_z.size(); ++i) {
-    // A drum's sections next to the feeder and the outlet hold the small drum's own inflow
-    // and outflow (particles falling in from the feeder, the film leaving over the edge),
-    // not the developed film: the thermal film takes the sections of z/L 0.2-0.8, held
-    // toward the ends, as the solid-fraction sampler's window does.
-    const double zl = a.ring_z[i] / a.length;
-    if (a.ring_z.size() > 1 && (zl < kDevelopedFrom || zl > kDevelopedTo)) continue;
+  for (const std::size_t i : sections) {
     f.z.push_back(a.ring_z[i]);
     std::vector<double> phi(nb), phi_sd(nb), u(nb), u_sd(nb);
     for (std::size_t k = 0; k < nb; ++k) {
@@ -83,18 +94,28 @@ MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut) {
       throw std::invalid_argument("film mapping: no film at z = " + std::to_string(a.ring_z[i]) +
                                   " m (solid fraction of the first bin " + std::to_string(phi[0]) + " < " +
                                   std::to_string(phi_cut) + ")");
-    const double t = static_cast<double>(top) * w;
-    // Above the film the thermal model reads nothing (FilmField ignores eta > t); the points
-    // there hold the film's top values so the field stays a valid film everywhere.
-    for (std::size_t k = top; k < nb; ++k) {
-      phi[k] = phi[top - 1], phi_sd[k] = phi_sd[top - 1];
-      u[k] = u[top - 1], u_sd[k] = u_sd[top - 1];
+    double t = static_cast<double>(top) * w;
+    // The first bin below the cut is kept as measured when the film ends where the profile,
+    // linear between bin centres, crosses phi_cut; the points above it hold its values.
+    std::size_t held_from = top;
+    if (top_at == FilmTop::at_crossing && top < nb) {
+      t = f.eta[top] + (phi[top - 1] - phi_cut) / (phi[top - 1] - phi[top]) * w;  // phi[top - 1] >= cut > phi[top]
+      held_from = top + 1;
     }
     double within = 0.0, all = 0.0;
     for (std::size_t k = 0; k < nb; ++k) {
       const double flow = a.ring_flux[i][k] * (R - a.wall_distance_d[k] * d);
       all += flow;
-      if (k < top) within += flow;
+      if (top_at == FilmTop::whole_bins)
+        within += k < top ? flow : 0.0;
+      else  // the part of bin k (k w to (k + 1) w from the wall) below the film's top
+        within += flow * std::clamp((t - static_cast<double>(k) * w) / w, 0.0, 1.0);
+    }
+    // Above the film the thermal model reads nothing (FilmField ignores eta > t); the points
+    // there hold the film's top values so the field stays a valid film everywhere.
+    for (std::size_t k = held_from; k < nb; ++k) {
+      phi[k] = phi[held_from - 1], phi_sd[k] = phi_sd[held_from - 1];
+      u[k] = u[held_from - 1], u_sd[k] = u_sd[held_from - 1];
     }
     out.cut.thickness.push_back(t);
     out.cut.flow_within_share.push_back(all > 0.0 ? within / all : 0.0);

@@ -39,8 +39,17 @@ struct MappedFilm {
   FilmCut cut;
 };
 
-// Throws std::invalid_argument naming the problem (empty film, no flow, ...).
+// Where a section's film ends: at the top of its last bin with phi >= phi_cut (whole bins),
+// or where the profile, linear between bin centres, crosses phi_cut (continuous in the
+// profile: a film does not jump by a bin when its top bin's phi passes the cut).
+enum class FilmTop { whole_bins, at_crossing };
+
+// The developed sections (a slice: its one section), whole bins. Throws
+// std::invalid_argument naming the problem (empty film, no flow, ...).
 MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut = kFilmSolidFractionCut);
+// The given sections (indices into a.ring_z, increasing), cut as top_at says.
+MappedFilm map_dem_sections(const DemFilmAverages& a, const std::vector<std::size_t>& sections, double phi_cut,
+                            FilmTop top_at);
 
 // map_dem_film at kFilmSolidFractionCut as a row of film_mappings(): the cut as the figure
 // film_solid_fraction_cut, per section the film's thickness (film_thickness, m) and the

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "coupling/film_along_drum.hpp"
 #include "coupling/film_mapping.hpp"
 
 namespace centrec::coupling {
@@ -24,6 +25,10 @@ const std::vector<FilmMappingEntry>& film_mappings() {
        "the film as the DEM measured it: full-circumference profiles of the developed sections, cut where the solid "
        "fraction falls below 0.1 (docs/coupling.md \"Film as measured\")",
        map_film_as_measured},
+      {"along_drum",
+       "a fed drum's film section by section along z from the feeder's end to the outlet, each section's own "
+       "profiles, cut where the solid fraction crosses 0.1 (docs/coupling.md \"Film along the drum\")",
+       map_film_along_drum},
   };
   return table;
 }

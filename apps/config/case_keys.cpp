@@ -55,6 +55,7 @@ std::vector<Walk> walks() {
       {"", thermal("transient: {t_end: 10}")},
       {"kind: step or pulse", thermal("flux: {time: {kind: step}}, transient: {t_end: 10, mass_flow: {kind: step}}")},
       {"kind: pulse", thermal("flux: {time: {kind: pulse}}, transient: {t_end: 10, mass_flow: {kind: pulse}}")},
+      {"a coupled case", coupled("") + "film: {mapping: as_measured}\n", false, true},
   };
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "coupling/film_mappings.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/flux_table_csv.hpp"
 #include "thermal/analytic_film.hpp"
@@ -249,11 +250,25 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   th::apply_particle(th::particle_data(c.particle), m.material, m.heat);
   m.material = read_material(t.child("material", "the particles' thermal properties (defaults: thermal.particle's)"),
                              m.material);
-  if (film_from_dem && !root.has("film"))
+  if (film_from_dem && !root.has("film")) {
     c.film_source.kind = FilmSource::Kind::dem;
-  else
-    read_film(root.child("film", "the film the thermal model heats: analytic or from a file (coupled cases: from the DEM)"),
-              case_dir, m.material.d, c);
+  } else {
+    MapReader f = root.child("film",
+                             "the film the thermal model heats: analytic or from a file (coupled cases: the DEM's, "
+                             "through film.mapping)");
+    if (film_from_dem && f.has("mapping")) {
+      std::vector<std::string> names;
+      for (const coupling::FilmMappingEntry& e : coupling::film_mappings()) names.push_back(e.name);
+      c.film_source.kind = FilmSource::Kind::dem;
+      c.film_source.mapping = f.choice("mapping", names.front(), names,
+                                       "how the DEM's film becomes the thermal film (docs/coupling.md): as_measured "
+                                       "(the developed sections; a slice's one) or along_drum (a fed drum, section by "
+                                       "section past the feeder)");
+      f.finish();
+    } else {
+      read_film(f, case_dir, m.material.d, c);
+    }
+  }
 
   const std::string model = t.choice("model", "2d", {"2d", "1d"},
                                      "2D film (z and depth) or 1D depth-lumped (quick estimate)");

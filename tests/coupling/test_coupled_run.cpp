@@ -14,12 +14,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <tuple>
 #include <utility>
 
 #include "config/case_file.hpp"
+#include "coupling/film_along_drum.hpp"
 #include "io/code_version.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/h5_file.hpp"
@@ -36,12 +38,10 @@ namespace fs = std::filesystem;
 
 namespace {
 const std::string kCase = std::string(CENTREC_SOURCE_DIR) + "/tests/coupling/small_coupled.yaml";
-// Stored by a run of this test (2D, 60 x 12; DEM deterministic at any thread count and, with
-// -ffp-contract=off, in Release and sanitizer builds alike). It pins one DEM trajectory and
-// the coupling, not the physics: the film handed over is the film as measured
-// (docs/coupling.md), which moved this short, unsteady D/d 21 film's T_out from 1167.63 K
-// (arc profiles rescaled per section) to 1081.81 K (developed sections z/L 0.2-0.8 only),
-// and the second-order (van Leer) advection default to 1082.04 K (docs/thermal_model.md).
+// Stored by a run of this test (2D, 60 x 12, van Leer advection; the DEM is deterministic at
+// any thread count and, with -ffp-contract=off, in Release and sanitizer builds alike). It
+// pins one DEM trajectory, the as_measured mapping and the thermal solve of this short,
+// unsteady D/d 21 film, not the physics; a change to any of them moves it and must say why.
 constexpr double kStoredTout = 1082.04;
 
 
@@ -203,6 +203,31 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
 
 // A DEM drum below the scale-down validity threshold is refused before any DEM work, with
 // the D/d asked, the threshold and where it was measured; --allow-small-drum runs it.
+// The same small drum mapped along_drum (film: {mapping: along_drum}): the thermal film has
+// every section past the feeder, each with its own flow; the outputs name the mapping.
+TEST(CoupledRun, ADrumsFilmAlongTheDrum) {
+  const std::string dir = centrec::testing::temp_dir("coupled_along");
+  RunOptions o;
+  o.cache_dir = dir + "/cache";
+  o.allow_small_drum = o.allow_unsteady = true;
+  const CaseFile cf = edited_case(dir, "thermal:\n", "film: {mapping: along_drum}\nthermal:\n");
+  ASSERT_EQ(cf.thermal->film_source.mapping, "along_drum");
+  const CoupledRun r = run_coupled_case(cf, o);
+  const auto sections = centrec::coupling::sections_past_feeder(r.averages);
+  const auto& c = r.closure.section_over_measured;
+  std::printf("along_drum: %zu of %zu sections (from z = %.4g m, feeder ends at %.4g m); closure per section "
+              "%.3f-%.3f; T_out %.2f K; %s\n",
+              sections.size(), r.averages.ring_z.size(), r.averages.ring_z[sections.front()], r.averages.feed_end,
+              *std::min_element(c.begin(), c.end()), *std::max_element(c.begin(), c.end()), r.result.balance.T_out,
+              r.mapping.text.c_str());
+  EXPECT_EQ(r.mapping.mapping, "along_drum");
+  EXPECT_GT(r.averages.feed_end, 0.0);
+  EXPECT_EQ(c.size(), sections.size());
+  EXPECT_GT(sections.size(), r.averages.ring_z.size() / 2);  // the feeder is a short region at the back plate
+  EXPECT_GT(r.result.balance.T_out, 873.15 + 10.0);
+  fs::remove_all(dir);
+}
+
 TEST(CoupledRun, SmallDrumIsRefusedUnlessAllowed) {
   const std::string dir = centrec::testing::temp_dir("coupled");
   RunOptions o;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "coupling/film_along_drum.hpp"
 #include "coupling/film_mapping.hpp"
 #include "coupling/film_mappings.hpp"
 #include "coupling/film_mass_flow.hpp"
@@ -218,4 +219,79 @@ TEST(FilmMapping, TheRegistryRowIsTheMappingWithItsReport) {
   EXPECT_NE(r.report.text.find("phi >= 0.1"), std::string::npos) << r.report.text;
   EXPECT_THROW(coupling::film_mapping("nonesuch"), std::invalid_argument);
   EXPECT_THROW(r.report.figure("nonesuch"), std::out_of_range);
+}
+
+// along_drum (coupling/film_along_drum.hpp): every section past the feeder, each cut where
+// its profile crosses phi 0.1 between bin centres.
+TEST(FilmAlongDrum, TakesEverySectionPastTheFeederWithItsOwnProfile) {
+  auto a = test::synthetic_dem_film(0.12);  // 20 sections of L/20
+  a.feed_end = 0.2 * a.length;              // sections 4..19 start at or past it
+  // A fast stream upstream: sections 4-6 carry twice the measured velocity profile.
+  for (std::size_t i = 4; i < 7; ++i)
+    for (auto& x : a.ring_flux[i]) x *= 2.0;
+  const coupling::FilmMappingResult r = coupling::film_mapping("along_drum").map(a);
+  const auto& f = r.film;
+  std::printf("along_drum: %zu sections from z = %.4f m (feeder ends at %.4f m); %s\n", f.nz(), f.z.front(),
+              a.feed_end, r.report.text.c_str());
+  ASSERT_EQ(f.nz(), 16u);
+  EXPECT_DOUBLE_EQ(f.z.front(), a.ring_z[4]);
+  EXPECT_DOUBLE_EQ(f.z.back(), a.ring_z[19]);
+  EXPECT_DOUBLE_EQ(r.report.figure("first_section_z_m"), a.ring_z[4]);
+  const double d = a.particle_diameter, c = 3.25;  // a bin centre inside the film
+  EXPECT_NEAR(f.sample(f.u, f.z[0], c * d), 2.0 * test::synthetic_u(c), 1e-12);  // section 4: the fast stream
+  EXPECT_NEAR(f.sample(f.u, f.z[5], c * d), test::synthetic_u(c), 1e-12);        // section 9: as measured
+  // Its own flow per section: the fast sections carry twice the measured flow.
+  const auto closure = coupling::flow_closure(f, a.particle_density, a.mdot);
+  std::printf("closure per section: first %.4f, last %.4f\n", closure.section_over_measured.front(),
+              closure.section_over_measured.back());
+  EXPECT_NEAR(closure.section_over_measured[0] / closure.section_over_measured[5], 2.0, 1e-9);
+}
+
+TEST(FilmAlongDrum, TheTopIsWhereTheProfileCrossesTheCut) {
+  auto a = test::synthetic_dem_film(0.12);
+  // Bin centres 4.25 d (phi 0.55) and 4.75 d (0.05): phi 0.1 is crossed at
+  // 4.25 + (0.55 - 0.1) / (0.55 - 0.05) x 0.5 = 4.70 d (whole bins: 4.5 d).
+  const auto m = coupling::map_dem_sections(a, {3}, 0.1, coupling::FilmTop::at_crossing);
+  const double d = a.particle_diameter, w = 0.5 * d;
+  std::printf("film top at the crossing %.6f d (expected 4.70), whole bins %.3f d\n", m.film.t[0] / d,
+              coupling::map_dem_sections(a, {3}, 0.1, coupling::FilmTop::whole_bins).film.t[0] / d);
+  EXPECT_NEAR(m.film.t[0] / d, 4.70, 1e-12);
+  // The share of the flow inside: bins 0-8 whole, bin 9 (4.5-5.0 d) for 0.4 of its width.
+  const double R = a.drum_radius;
+  double inside = 0.0, all = 0.0;
+  for (std::size_t k = 0; k < a.wall_distance_d.size(); ++k) {
+    const double F = a.ring_flux[3][k] * (R - a.wall_distance_d[k] * d);
+    all += F;
+    inside += k < 9 ? F : k == 9 ? 0.4 * F : 0.0;
+  }
+  EXPECT_NEAR(m.cut.flow_within_share[0], inside / all, 1e-12);
+  // Continuous in the profile: the top bin's phi passing the cut moves the top by a little
+  // (here 0.002 d), where whole bins jump by a bin (0.5 d).
+  double t_at[2], t_bins[2];
+  for (int s = 0; s < 2; ++s) {
+    auto b = a;
+    b.ring_phi[3][9] = s == 0 ? 0.0999 : 0.1001;
+    b.ring_flux[3][9] = b.ring_phi[3][9] * test::synthetic_u(4.75);
+    t_at[s] = coupling::map_dem_sections(b, {3}, 0.1, coupling::FilmTop::at_crossing).film.t[0];
+    t_bins[s] = coupling::map_dem_sections(b, {3}, 0.1, coupling::FilmTop::whole_bins).film.t[0];
+  }
+  std::printf("top bin phi 0.0999 -> 0.1001: crossing %.4f -> %.4f d, whole bins %.2f -> %.2f d\n", t_at[0] / d,
+              t_at[1] / d, t_bins[0] / d, t_bins[1] / d);
+  EXPECT_LT(std::abs(t_at[1] - t_at[0]), 0.01 * d);
+  EXPECT_NEAR(t_bins[1] - t_bins[0], w, 1e-12);
+}
+
+TEST(FilmAlongDrum, RefusesASliceAndADrumWithNoSectionPastItsFeeder) {
+  auto a = test::synthetic_dem_film(0.12);
+  a.feed_end = 1.01 * a.length;
+  EXPECT_THROW(coupling::map_film_along_drum(a), std::invalid_argument);
+  auto s = test::synthetic_dem_film(0.12, 1.2e-3, 1);
+  s.slice = true;
+  try {
+    coupling::map_film_along_drum(s);
+    ADD_FAILURE() << "a slice was mapped along the drum";
+  } catch (const std::invalid_argument& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("as_measured"), std::string::npos);
+  }
 }
