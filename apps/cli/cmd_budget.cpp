@@ -16,7 +16,7 @@ namespace centrec::cli {
 int cmd_budget(const Args& args) {
   if (wants_help(args)) {
     std::printf(
-        "usage: centrec budget CASE.yaml --out DIR [--film FILM.h5] [--samples N] [--seed S]\n"
+        "usage: centrec budget CASE.yaml --out DIR [--film FILM.h5] [--samples N] [--seed S] [--overwrite]\n"
         "                      [--replicas-from RUN_DIR/summary.json]\n\n"
         "The error budget of the case's outlet temperature, receiver efficiency and k_eff\n"
         "(docs/error_budget.md): each uncertain input of the thermal model (the particle's c_p,\n"
@@ -46,6 +46,8 @@ int cmd_budget(const Args& args) {
   app.add_option("--replicas-from", replicas_path);
   app.add_option("--samples", samples)->check(integer_in(12, 100000));
   app.add_option("--seed", seed)->check(integer_in(0, 2147483647));
+  bool overwrite = false;
+  add_overwrite_flag(app, overwrite);
   app.read(args);
   s.lhs_samples = static_cast<int>(samples);
   s.seed = static_cast<std::uint64_t>(seed);
@@ -73,6 +75,7 @@ int cmd_budget(const Args& args) {
     }
   }
   const io::OutputFolder out(out_dir);
+  const io::RunFolderClaim claim(out_dir, "centrec budget " + case_path, folder_use(overwrite));
   runs::BudgetResult r = runs::run_thermal_budget(c, s);
   if (dem.given) runs::add_replica_spread(r, dem);
   nlohmann::json j = runs::budget_json(r);

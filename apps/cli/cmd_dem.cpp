@@ -1,5 +1,6 @@
 // `centrec dem CASE.yaml --out DIR`: a DEM-only run of the CentRec scene.
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 
@@ -24,7 +25,7 @@ namespace {
 
 struct DemOptions {
   std::string case_path, out_dir = "out/dem", resume_dir;
-  bool no_plots = false;
+  bool no_plots = false, overwrite = false, out_given = false;
   config::Overrides overrides;  // --threads, --duration
   DemEngineOptions engine;
 };
@@ -62,6 +63,7 @@ void declare(CommandLine& app, DemOptions& o) {
       ->option_text("DIR");
   add_override_flags(app, o.overrides, {OverrideFlag::threads, OverrideFlag::duration});
   app.add_flag("--no-plots", o.no_plots, "draw no figures");
+  add_overwrite_flag(app, o.overwrite);
   add_engine_options(app, o.engine);
 }
 
@@ -72,6 +74,11 @@ void check(DemOptions& o) {
     if (o.overrides.duration)
       throw UsageError("--duration cannot change a resumed run: it continues to the run.duration stored in " +
                        io::checkpoint_path(o.resume_dir) + " (the first run's --duration, if it had one)");
+    if (o.out_given && std::filesystem::path(o.out_dir).lexically_normal() !=
+                           std::filesystem::path(o.resume_dir).lexically_normal())
+      throw UsageError("--resume " + o.resume_dir + " continues the run in that folder; --out " + o.out_dir +
+                       " would be another: give --resume alone (a copy of the folder resumes where it lies)");
+    if (o.overwrite) throw UsageError("--overwrite starts a new run; --resume continues one: give one of them");
     o.out_dir = o.resume_dir;
   }
   if (o.case_path.empty() && o.resume_dir.empty()) throw UsageError("no case file given (centrec dem --help)");
@@ -88,6 +95,7 @@ int cmd_dem(const Args& args) {
     return 0;
   }
   app.read(args);
+  o.out_given = app.count("--out") > 0;
   check(o);
   const DemOptions& opt = o;
   // A resumed run takes its case from the checkpoint (a case file given too must match).
@@ -114,6 +122,8 @@ int cmd_dem(const Args& args) {
   config::DemCase dc = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, {});
   if (!opt.engine.wall_rolling_model.empty()) apply_wall_rolling_model(dc, opt.engine.wall_rolling_model);
   const io::OutputFolder out(opt.out_dir);
+  const io::RunFolderClaim claim(opt.out_dir, "centrec dem " + (ck ? "--resume " + opt.resume_dir : opt.case_path),
+                                 ck ? io::FolderUse::resume : folder_use(opt.overwrite));
   try {
     if (opt.engine.engine == "liggghts") {
       liggghts::LiggghtsLaunch launch;

@@ -73,7 +73,7 @@ std::string parent_of(const std::string& dir) {
 // `--replicas N`: the same command N times as child processes, seed base + k into
 // DIR/replica_<k>/, then the spread of the headline figures (runs/replica_summary.hpp).
 int run_replicas(const CommandLine& app, const Args& args, const std::string& case_path, const std::string& out_dir,
-                 const config::CaseFile& cf, const runs::RunOptions& o, int replicas, bool no_plots) {
+                 const config::CaseFile& cf, const runs::RunOptions& o, int replicas, bool no_plots, bool overwrite) {
   if (!(cf.dem && cf.thermal && cf.thermal->film_source.from_dem()))
     throw UsageError(case_path + ": --replicas repeats the DEM with other seeds, but this case has no DEM film");
   const long long base = static_cast<long long>(o.overrides.seed ? *o.overrides.seed : cf.dem->scene.seed);
@@ -81,8 +81,10 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
   const int threads = o.overrides.threads && *o.overrides.threads > 0 ? *o.overrides.threads : cores;
   const int parallel = std::min(replicas, threads);
   const int per_child = std::max(1, threads / parallel);
-  io::ensure_directory(out_dir);
-  // The command as given, minus the options this sets per replica.
+  const io::OutputFolder out(out_dir);
+  const io::RunFolderClaim claim(out_dir, "centrec run --replicas " + case_path, folder_use(overwrite));
+  // The command as given, minus the options this sets per replica (--overwrite is passed on:
+  // the replicas' folders are the earlier run's too).
   const Args common =
       without_options(app, args, {"--out", "--seed", "--replicas", "--threads", "--cache", "--no-plots"});
   const std::string exe = own_executable();
@@ -135,7 +137,7 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
 int cmd_run(const Args& args) {
   std::string case_path, out_dir;
   runs::RunOptions o;
-  bool no_plots = false;
+  bool no_plots = false, overwrite = false;
   int replicas = 1;
   CommandLine app("run");
   app.add_option("CASE", case_path)->required();
@@ -149,6 +151,7 @@ int cmd_run(const Args& args) {
   app.add_option("--dem-from", o.dem_from, "take the film of a finished `centrec dem` run of the same DEM inputs")
       ->option_text("DEM_DIR");
   app.add_flag("--no-plots", no_plots, "draw no figures");
+  add_overwrite_flag(app, overwrite);
   app.add_flag("--allow-small-drum", o.allow_small_drum,
                "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
   app.add_flag("--allow-unsteady", o.allow_unsteady,
@@ -165,8 +168,9 @@ int cmd_run(const Args& args) {
   if (cf.dem && cf.thermal && cf.thermal->film_source.from_dem()) checked_dem(cf, overrides);
   if (replicas > 1 && !o.dem_from.empty())
     throw UsageError("--replicas runs the DEM with other seeds; --dem-from takes one earlier run: give one of them");
-  if (replicas > 1) return run_replicas(app, args, case_path, out_dir, cf, o, replicas, no_plots);
+  if (replicas > 1) return run_replicas(app, args, case_path, out_dir, cf, o, replicas, no_plots, overwrite);
   const io::OutputFolder out(out_dir);
+  const io::RunFolderClaim claim(out_dir, "centrec run " + case_path, folder_use(overwrite));
   runs::CoupledRun r;
   try {
     r = runs::run_coupled_case(cf, o);

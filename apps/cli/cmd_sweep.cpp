@@ -46,7 +46,7 @@ void print_sweep_help(const CommandLine& app) {
 // --allow-unsteady: a point whose DEM did not reach steady flow is reported as such in the
 // table rather than lost.
 ChildJob point_job(const std::string& exe, const std::string& case_path, const std::string& cache, const Point& p,
-                   bool allow_small_drum, int replicas) {
+                   bool allow_small_drum, int replicas, bool overwrite) {
   io::ensure_directory(p.dir);
   // Full precision: std::to_string's six decimals would turn 1e-7 kg/s into 0.
   auto exact = [](double v) {
@@ -58,21 +58,29 @@ ChildJob point_job(const std::string& exe, const std::string& case_path, const s
                 exact(p.mdot), "--threads", "1", "--no-plots", "--allow-unsteady"},
                p.dir + "/run.log"};
   if (allow_small_drum) job.argv.push_back("--allow-small-drum");
+  if (overwrite) job.argv.push_back("--overwrite");
   if (replicas > 1) job.argv.insert(job.argv.end(), {"--replicas", std::to_string(replicas)});
   return job;
 }
 
-std::string point_name(double rpm, double mdot) {
-  char b[96];
-  std::snprintf(b, sizeof b, "rpm%g_mdot%g", rpm, mdot);
+// The shortest text (at least 6 significant digits) that reads back as v: two different
+// values never share a folder name.
+std::string exact_text(double v) {
+  char b[40];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    if (std::strtod(b, nullptr) == v) break;
+  }
   return b;
 }
+
+std::string point_name(double rpm, double mdot) { return "rpm" + exact_text(rpm) + "_mdot" + exact_text(mdot); }
 }  // namespace
 
 int cmd_sweep(const Args& args) {
   std::string case_path, out_dir, cache;
   int parallel = 0, replicas = 1;
-  bool allow_small_drum = false;
+  bool allow_small_drum = false, overwrite = false;
   CommandLine app("sweep");
   app.add_option("CASE", case_path)->required();
   app.add_option("--out", out_dir, "the sweep's folder (created)")->required()->option_text("DIR");
@@ -85,6 +93,7 @@ int cmd_sweep(const Args& args) {
       ->option_text("N");
   app.add_flag("--allow-small-drum", allow_small_drum,
                "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
+  add_overwrite_flag(app, overwrite);
   if (wants_help(args)) {
     print_sweep_help(app);
     return 0;
@@ -101,14 +110,20 @@ int cmd_sweep(const Args& args) {
   }
   if (parallel <= 0) parallel = cf.sweep->parallel;
   if (cache.empty()) cache = out_dir + "/dem-cache";
-  io::ensure_directory(out_dir);
+  const io::OutputFolder out(out_dir);
+  const io::RunFolderClaim claim(out_dir, "centrec sweep " + case_path, folder_use(overwrite));
   const std::string exe = own_executable();
 
   std::vector<Point> points;
   for (double rpm : cf.sweep->speed_rpm)
     for (double mdot : cf.sweep->mass_flow) points.push_back({rpm, mdot, out_dir + "/" + point_name(rpm, mdot)});
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (points[k].dir == points[i].dir)
+        throw std::invalid_argument(case_path + ": the sweep grid lists the point " + point_name(points[i].rpm, points[i].mdot) +
+                                    " twice (a speed or a mass flow repeated)");
   std::vector<ChildJob> jobs;
-  for (const Point& p : points) jobs.push_back(point_job(exe, case_path, cache, p, allow_small_drum, replicas));
+  for (const Point& p : points) jobs.push_back(point_job(exe, case_path, cache, p, allow_small_drum, replicas, overwrite));
   const auto t0 = std::chrono::steady_clock::now();
   std::size_t done = 0;
   run_child_jobs(

@@ -15,7 +15,7 @@ namespace centrec::cli {
 int cmd_thermal(const Args& args) {
   if (wants_help(args)) {
     std::printf(
-        "usage: centrec thermal CASE.yaml --out DIR\n\n"
+        "usage: centrec thermal CASE.yaml --out DIR [--overwrite]\n\n"
         "Solves the energy equation of the particle film under concentrated solar flux\n"
         "(docs/thermal_model.md): the steady state of the operating point (2D on z x xi = eta/t,\n"
         "or the 1D depth-lumped model), then the transient if the case has `thermal.transient`\n"
@@ -34,9 +34,12 @@ int cmd_thermal(const Args& args) {
   CommandLine app("thermal");
   app.add_option("CASE", case_path)->required();
   app.add_option("--out", out_dir)->required();
+  bool overwrite = false;
+  add_overwrite_flag(app, overwrite);
   app.read(args);
   const config::ThermalCase c = config::read_thermal_case(case_path);
   const io::OutputFolder out(out_dir);
+  const io::RunFolderClaim claim(out_dir, "centrec thermal " + case_path, folder_use(overwrite));
   const auto t0 = std::chrono::steady_clock::now();
   const runs::ThermalRun r = runs::run_thermal_case(c);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

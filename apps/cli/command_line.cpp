@@ -113,4 +113,11 @@ CLI::Validator integer_in(long lo, long hi) {
       "INTEGER");
 }
 
+void add_overwrite_flag(CommandLine& app, bool& overwrite) {
+  app.add_flag("--overwrite", overwrite,
+               "replace the results (or the interrupted run) that DIR holds: their files are removed first");
+}
+
+io::FolderUse folder_use(bool overwrite) { return overwrite ? io::FolderUse::overwrite : io::FolderUse::new_run; }
+
 }  // namespace centrec::cli

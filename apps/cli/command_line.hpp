@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "config/strict_yaml.hpp"
+#include "io/run_folder.hpp"
 
 namespace centrec::cli {
 
@@ -46,5 +47,10 @@ const CLI::Validator& positive_number();
 CLI::Validator number_in(const config::Range& range, const std::string& unit = "");
 // Accepts a whole number in [lo, hi].
 CLI::Validator integer_in(long lo, long hi);
+
+// `--overwrite` of the commands that write a run folder (io/run_folder.hpp), and the folder
+// use it asks for.
+void add_overwrite_flag(CommandLine& app, bool& overwrite);
+io::FolderUse folder_use(bool overwrite);
 
 }  // namespace centrec::cli

@@ -72,7 +72,7 @@ def do_run(a):
     # (the DEM comes from the cache: seconds).
     for python, says in (("/nonexistent/python3", "not found"), ("/bin/false", "lacks matplotlib")):
         env = dict(os.environ, CENTREC_PYTHON=python)
-        folder = os.path.join(a.work, "run_without_python")
+        folder = os.path.join(a.work, "run_without_python_" + os.path.basename(python))
         p = subprocess.run([a.centrec, "run", os.path.join(a.source, "tests/coupling/small_coupled.yaml"), "--out", folder,
                             "--cache", os.path.join(a.work, "cache"), "--allow-small-drum", "--allow-unsteady"],
                            capture_output=True, text=True, env=env)
