@@ -134,6 +134,12 @@ DemCase read_dem_case(MapReader root) {
       "the case file), a slice's laid end to end or a drum's, on the same drum diameter and rough wall");
   if (!c.initial_film_from_run.empty() && s.initial_film.particles > 0)
     film.fail("from_run", "and initial_film.particles both given: a settled start replaces the loose film");
+  s.initial_film.holdup_fraction =
+      film.number("holdup_fraction", 1.0, Range::open_closed(0.0, 1.0), "",
+                  "with from_run: the fraction of the laid film kept in every axial section of one diameter, its "
+                  "top left out (a fed drum of the paper's length holds about 0.75 of its slice's film)");
+  if (s.initial_film.holdup_fraction < 1.0 && c.initial_film_from_run.empty())
+    film.fail("holdup_fraction", "thins a settled start: give initial_film.from_run with it");
   film.finish();
 
   auto slice = root.child("slice", "an axially periodic slice of the drum instead of the full drum");

@@ -72,6 +72,10 @@ struct InitialFilmSpec {
     Vec3 x, v, w;         // m, m/s, rad/s
   };
   std::vector<Particle> settled;
+  // Fraction of the settled film kept in every axial section of one diameter, its top (the
+  // particles nearest the axis) left out: a fed drum holds less than the developed film of
+  // the slice it is laid from (docs/centrec_scene.md "Settled start"). 1 keeps all.
+  double holdup_fraction = 1.0;
 };
 
 // Axially periodic slice of the drum: no feeder, no outlet, no plates.

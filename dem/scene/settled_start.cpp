@@ -1,8 +1,10 @@
 #include "dem/scene/settled_start.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "dem/first_half_step.hpp"
 
@@ -28,6 +30,30 @@ Rows lattice_rows(const SceneConfig& c) {
   if (w.lattice == Lattice::hexagonal && n % 2) --n;
   const double dz = c.slice.length / n;
   return {dz, 0.5 * dz};
+}
+
+// The fraction f of `film` in every axial section of length `section`, the particles nearest
+// the axis (the film's top) left out; the totals kept are rounded cumulatively, so the whole
+// film keeps f of its particles to within one.
+std::vector<InitialFilmSpec::Particle> keep_lower_fraction(std::vector<InitialFilmSpec::Particle> film, double f,
+                                                           double section) {
+  auto index = [section](const InitialFilmSpec::Particle& p) { return static_cast<long>(std::floor(p.x.z / section)); };
+  auto rho2 = [](const InitialFilmSpec::Particle& p) { return p.x.x * p.x.x + p.x.y * p.x.y; };
+  std::stable_sort(film.begin(), film.end(), [&](const auto& a, const auto& b) {
+    const long ia = index(a), ib = index(b);
+    return ia != ib ? ia < ib : rho2(a) > rho2(b);
+  });
+  std::vector<InitialFilmSpec::Particle> kept;
+  std::size_t seen = 0;
+  for (std::size_t b = 0; b < film.size();) {
+    std::size_t e = b;
+    while (e < film.size() && index(film[e]) == index(film[b])) ++e;
+    seen += e - b;
+    const std::size_t total = static_cast<std::size_t>(std::llround(f * static_cast<double>(seen)));
+    for (std::size_t i = b; i < e && kept.size() < total; ++i) kept.push_back(film[i]);
+    b = e;
+  }
+  return kept;
 }
 
 }  // namespace
@@ -76,6 +102,9 @@ std::vector<InitialFilmSpec::Particle> settled_film(const SceneConfig& source, c
       out.push_back({r, p, v_wall_frame + cross(w_new * axis, p), w_wall_frame + w_new * axis});
     }
   }
+  const double f = target.initial_film.holdup_fraction;
+  if (!(f > 0.0 && f <= 1.0)) refuse("holdup_fraction " + std::to_string(f) + " is not in (0, 1]");
+  if (f < 1.0) out = keep_lower_fraction(std::move(out), f, target.particle.diameter);
   if (out.empty()) refuse("the run's state holds no free particle inside this drum's length");
   return out;
 }

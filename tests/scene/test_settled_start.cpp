@@ -133,3 +133,51 @@ TEST(SettledStart, RefusesAnotherDrumDiameterOrASliceTarget) {
   }
   EXPECT_THROW(settled_film(slice, state, slice), std::invalid_argument);
 }
+
+// holdup_fraction: every axial section of one diameter keeps that fraction of the laid film
+// (to within one particle), and what it keeps is the film's base: no kept particle sits
+// nearer the axis than a left-out one of its section.
+TEST(SettledStart, HoldupFractionKeepsEachSectionsBase) {
+  SceneConfig slice = centrec::testing::controlled_slice(400, 0.0);
+  slice.threads = 1;
+  CentrecScene source(slice);
+  source.advance(0.01);
+  const SimulationState state = source.simulation().export_state();
+  const double d = slice.particle.diameter;
+  SceneConfig drum = slice;
+  drum.slice.enabled = false;
+  drum.slice.target_mass_flow = 0.0;
+  drum.drum.length = 20 * d;
+  drum.feeder.enabled = false;
+  const std::vector<InitialFilmSpec::Particle> all = settled_film(slice, state, drum);
+  drum.initial_film.holdup_fraction = 0.6;
+  const std::vector<InitialFilmSpec::Particle> thin = settled_film(slice, state, drum);
+
+  auto rho = [](const InitialFilmSpec::Particle& p) { return std::hypot(p.x.x, p.x.y); };
+  const int sections = 20;
+  std::vector<int> n_all(sections, 0), n_thin(sections, 0);
+  std::vector<double> top_kept(sections, 1e9);  // smallest radial distance kept per section
+  for (const auto& p : all) ++n_all[std::min(sections - 1, static_cast<int>(p.x.z / d))];
+  for (const auto& p : thin) {
+    const int k = std::min(sections - 1, static_cast<int>(p.x.z / d));
+    ++n_thin[k];
+    top_kept[k] = std::min(top_kept[k], rho(p));
+  }
+  int worst_count = 0, left_out_below_kept = 0;
+  for (int k = 0; k < sections; ++k) worst_count = std::max(worst_count, std::abs(n_thin[k] - static_cast<int>(std::lround(0.6 * n_all[k]))));
+  for (const auto& p : all) {
+    const int k = std::min(sections - 1, static_cast<int>(p.x.z / d));
+    bool kept = false;
+    for (const auto& q : thin) kept = kept || norm(q.x - p.x) == 0.0;
+    if (!kept && rho(p) > top_kept[k]) ++left_out_below_kept;  // a left-out particle nearer the wall than a kept one
+  }
+  std::printf("holdup_fraction 0.6: %zu of %zu particles kept (%.4f); largest miss in a section %d particles; "
+              "left-out particles nearer the wall than a kept one of their section: %d\n",
+              thin.size(), all.size(), static_cast<double>(thin.size()) / all.size(), worst_count, left_out_below_kept);
+  EXPECT_NEAR(static_cast<double>(thin.size()), 0.6 * all.size(), 1.0);
+  EXPECT_LE(worst_count, 1);
+  EXPECT_EQ(left_out_below_kept, 0);
+
+  drum.initial_film.holdup_fraction = 1.0;
+  EXPECT_EQ(settled_film(slice, state, drum).size(), all.size());
+}
