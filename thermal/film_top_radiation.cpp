@@ -27,7 +27,8 @@ double backscatter_by_quadrature() {
     for (int c = 0; c < n; ++c) {
       const double mu = -(c + 0.5) / n, s = std::sqrt(1.0 - mu * mu);
       double az = 0.0;
-      for (int k = 0; k < m; ++k) az += diffuse_sphere_phase(mu * mu_in + s * s_in * std::cos(2.0 * kPi * (k + 0.5) / m));
+      for (int k = 0; k < m; ++k)
+        az += diffuse_sphere_phase(mu * mu_in + s * s_in * std::cos(2.0 * kPi * (k + 0.5) / m));
       sum += 0.5 * az / m;
     }
   }
@@ -89,7 +90,8 @@ TwoFluxColumn two_flux_column(const std::vector<double>& phi, double deta, doubl
     for (int q = 0; q < N; ++q) {
       const double v = inv[static_cast<std::size_t>(r) * N + q];
       if (v == 0.0) continue;
-      for (int k = 0; k < ns; ++k) flux[static_cast<std::size_t>(r) * ns + k] += v * rhs[static_cast<std::size_t>(q) * ns + k];
+      for (int k = 0; k < ns; ++k)
+        flux[static_cast<std::size_t>(r) * ns + k] += v * rhs[static_cast<std::size_t>(q) * ns + k];
     }
   auto f = [&](int face, int dir, int k) { return flux[static_cast<std::size_t>(2 * face + dir) * ns + k]; };
   TwoFluxColumn col;
@@ -99,7 +101,8 @@ TwoFluxColumn two_flux_column(const std::vector<double>& phi, double deta, doubl
   col.leaving.resize(ns);
   for (int k = 0; k < ns; ++k) {
     for (int j = 0; j < n; ++j)
-      col.absorbed[static_cast<std::size_t>(j) * ns + k] = (f(j, U, k) + f(j + 1, W, k)) - (f(j + 1, U, k) + f(j, W, k));
+      col.absorbed[static_cast<std::size_t>(j) * ns + k] =
+          (f(j, U, k) + f(j + 1, W, k)) - (f(j + 1, U, k) + f(j, W, k));
     col.below[k] = f(0, W, k) - f(0, U, k);
     col.leaving[k] = f(n, U, k);
   }

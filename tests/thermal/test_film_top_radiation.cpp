@@ -299,10 +299,11 @@ TEST(FilmTopRadiation, TwoFluxMatchesARayTraceThroughARandomPacking) {
 
   const double b = diffuse_sphere_backscatter_fraction();
   const TwoFluxColumn col = two_flux_column(phi, deta, 1.0, eps, b);
-  std::printf("diffuse emissivity of the bed towards the cavity (the share of H it absorbs): ray trace %.4f (+- %.4f), "
-              "two-flux %.4f, off by %.2f %% (tolerance 5 %%)\n",
-              absorptance, std::sqrt(absorptance * (1 - absorptance) / h_rays), col.emissivity(),
-              100 * std::abs(col.emissivity() / absorptance - 1));
+  std::printf(
+      "diffuse emissivity of the bed towards the cavity (the share of H it absorbs): ray trace %.4f (+- %.4f), "
+      "two-flux %.4f, off by %.2f %% (tolerance 5 %%)\n",
+      absorptance, std::sqrt(absorptance * (1 - absorptance) / h_rays), col.emissivity(),
+      100 * std::abs(col.emissivity() / absorptance - 1));
   EXPECT_LT(std::abs(col.emissivity() / absorptance - 1), 0.05);
 
   // Two temperature profiles: the solar-heated top 150 K above the bed, and the top 150 K
@@ -330,11 +331,12 @@ TEST(FilmTopRadiation, TwoFluxMatchesARayTraceThroughARandomPacking) {
     // The former treatment: the top bin as a grey surface of the particles' emissivity.
     const double net_surface = eps * (kSigma * std::pow(T_at(t - 0.5 * deta), 4) - H);
     const double err = std::abs(net_model - net_mc) / emitted_out;
-    std::printf("%s: net flux leaving the top: ray trace %.0f W/m2 (emitted %.0f, H absorbed %.0f), two-flux %.0f "
-                "(emitted %.0f), top bin as a surface %.0f; two-flux off by %.2f %% of the emitted power (tolerance "
-                "5 %%), the surface by %.2f %%\n",
-                pr.name, net_mc, emitted_out, absorptance * H, net_model, emitted_model, net_surface, 100 * err,
-                100 * std::abs(net_surface - net_mc) / emitted_out);
+    std::printf(
+        "%s: net flux leaving the top: ray trace %.0f W/m2 (emitted %.0f, H absorbed %.0f), two-flux %.0f "
+        "(emitted %.0f), top bin as a surface %.0f; two-flux off by %.2f %% of the emitted power (tolerance "
+        "5 %%), the surface by %.2f %%\n",
+        pr.name, net_mc, emitted_out, absorptance * H, net_model, emitted_model, net_surface, 100 * err,
+        100 * std::abs(net_surface - net_mc) / emitted_out);
     EXPECT_LT(err, 0.05) << pr.name;
   }
 }
@@ -363,10 +365,11 @@ TEST(FilmTopRadiation, OperatorClosesTheCavityBalance) {
     op.freeze_inputs(true);
     const SteadyResult s = solve_steady(op, op.uniform_state(x.T_in), SteadySettings{});
     const FilmBalance b = op.balance(0.0, s.y.data());
-    std::printf("%s: T_out %.3f K, efficiency %.5f, emitted through the aperture %.1f W, film emits %.1f W net; "
-                "receiver residual %.2e, film residual %.2e of the aperture power; %d Newton steps, marched %d\n",
-                two ? "two-flux top" : "surface top", b.T_out, b.efficiency, b.emitted_loss, b.emitted,
-                b.receiver_residual / b.aperture_power, b.residual / b.aperture_power, s.newton_iterations, s.marched);
+    std::printf(
+        "%s: T_out %.3f K, efficiency %.5f, emitted through the aperture %.1f W, film emits %.1f W net; "
+        "receiver residual %.2e, film residual %.2e of the aperture power; %d Newton steps, marched %d\n",
+        two ? "two-flux top" : "surface top", b.T_out, b.efficiency, b.emitted_loss, b.emitted,
+        b.receiver_residual / b.aperture_power, b.residual / b.aperture_power, s.newton_iterations, s.marched);
     EXPECT_LT(std::abs(b.receiver_residual / b.aperture_power), 1e-10);
     EXPECT_LT(std::abs(b.residual / b.aperture_power), 1e-10);
   }
