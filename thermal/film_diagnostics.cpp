@@ -23,7 +23,7 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
     const double q = q_column_[i] * in.flux_factor;
     b.incident += q * g.dz;
     b.absorbed += model_.material.alpha * solar_irradiation(i, in) * g.dz;  // at the surface or in the top layers
-    b.emitted += st.emitted * g.dz;
+    b.emitted += (two_flux() ? top_net_emitted(i, y, top_irradiation(i)) : st.emitted) * g.dz;
     b.convected += st.convected * g.dz;
     b.wall += wall_loss(i, y[bottom], props_[bottom].kn) * g.dz;
   }
@@ -99,7 +99,7 @@ ThermalFields FilmOperator::fields(double t, const double* y) {
   for (long p = 0; p < n; ++p) {
     const int c = static_cast<int>(p);
     f.k_bed[p] = k_bed(c, y[p]);
-    f.k_rad[p] = model_.conductivity.k_constant > 0 ? 0.0 : model_.bed.evaluate(y[p], g.phi[p]).k_rad;
+    f.k_rad[p] = model_.conductivity.k_constant > 0 || in_top_zone(c) ? 0.0 : model_.bed.evaluate(y[p], g.phi[p]).k_rad;
     f.k_mix[p] = k_mix(c, y[p]);
     f.k_n[p] = props(c, y[p]).kn;
   }
@@ -108,7 +108,7 @@ ThermalFields FilmOperator::fields(double t, const double* y) {
     const SurfaceState st = surface(i, y[top], f.k_n[top], in);
     f.T_surface.push_back(st.T_s);
     f.q_absorbed.push_back(model_.material.alpha * solar_irradiation(i, in));
-    f.q_emitted.push_back(st.emitted);
+    f.q_emitted.push_back(two_flux() ? top_net_emitted(i, y, top_irradiation(i)) : st.emitted);
     f.q_convected.push_back(st.convected);
     f.q_wall.push_back(wall_loss(i, y[bottom], f.k_n[bottom]));
   }
@@ -143,7 +143,8 @@ std::vector<KeffSection> FilmOperator::keff_sections(const double* y) const {
       const int p = g.index(i, j);
       if (!(g.u[p] > 1e-9 * u_max)) continue;  // the resting layer is not part of the moving film
       const double kb = k_bed(p, y[p]);
-      const double kb0 = model_.conductivity.k_constant > 0 ? kb : no_rad.k_bed(y[p], g.phi[p]);
+      // The two-flux zone's k_bed has no radiation part (its radiation is not a conductivity).
+      const double kb0 = model_.conductivity.k_constant > 0 || in_top_zone(p) ? kb : no_rad.k_bed(y[p], g.phi[p]);
       const double kn = model_.conductivity.mixing ? kb + k_mix(p, y[p]) : kb;
       thick += g.deta[i];
       r_n += g.deta[i] / kn;

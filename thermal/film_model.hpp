@@ -76,6 +76,19 @@ struct WallConditions {
   double T_amb = 300.0;  // K
 };
 
+// The thermal band in the film's top (docs/thermal_model.md, "The film top as a participating
+// medium"). surface: the top cell emits as a grey surface at the surface temperature and the
+// bed conductivity carries the radiation between particles (ZBS's k_rad) everywhere.
+// two_flux: the cells within depth_d particle diameters of the surface form a participating
+// medium (thermal/film_top_radiation.hpp) that emits and absorbs per cell and exchanges with
+// the cavity through its top; there the bed conductivity drops k_rad, and below ZBS's range
+// (phi < zbs_min_phi) it is Maxwell's conduction of dispersed spheres.
+struct FilmTopRadiation {
+  bool two_flux = false;
+  double depth_d = 3.0;        // particle diameters below the surface
+  double zbs_min_phi = 0.4;    // ZBS's lower validity (packed beds, porosity <= 0.6)
+};
+
 struct ConductivitySettings {
   double k_constant = 0.0;       // W/(m K); > 0 replaces the ZBS bed model (analytic tests)
   bool mixing = true;            // add k_mix = phi rho_s c_p D to the wall-normal conductivity
@@ -92,6 +105,7 @@ struct FilmModel {
   TimeFactor flux_time;       // q(z, t) = flux(z) * flux_time(t)
   TimeFactor flow_time;       // u(z, eta, t) = u(z, eta) * flow_time(t) (mass-flow change)
   SurfaceConditions surface;
+  FilmTopRadiation film_top;
   CavitySettings cavity;
   WallConditions wall;
   double T_in = 300.0;        // inlet temperature, K

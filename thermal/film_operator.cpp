@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "air_conductivity.hpp"
 #include "cavity_convection.hpp"
 #include "physical_constants.hpp"
 #include "solar_extinction.hpp"
@@ -69,7 +70,67 @@ FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const 
       extinction_depth_.push_back(model_.surface.extinction_scale * n * m.d);
     }
   }
+  if (model_.film_top.two_flux) setup_film_top();
   if (model_.cavity.enabled) setup_cavity();
+}
+
+void FilmOperator::setup_film_top() {
+  const FilmTopRadiation& ft = model_.film_top;
+  if (grid_.lumped) throw std::invalid_argument("film_top two_flux needs the 2d model (a depth to radiate through)");
+  if (!model_.cavity.enabled && model_.surface.loss_factor != 1.0)
+    throw std::invalid_argument("film_top two_flux: the open surface's loss factor must be 1 (the film's own "
+                                "emissivity follows from the two-flux column)");
+  if (!(ft.depth_d > 0.0)) throw std::invalid_argument("film_top two_flux: depth_d must be > 0");
+  const Material& m = model_.material;
+  const double b = diffuse_sphere_backscatter_fraction();
+  const int nxi = grid_.nxi;
+  top_begin_.resize(grid_.nz);
+  top_.reserve(grid_.nz);
+  for (int i = 0; i < grid_.nz; ++i) {
+    // The zone: the cells whose centre lies within depth_d particle diameters of the surface
+    // (at least the top cell).
+    const double deta = grid_.deta[i];
+    int j0 = nxi - 1;
+    while (j0 > 0 && grid_.tc[i] - (j0 - 0.5) * deta < ft.depth_d * m.d) --j0;
+    top_begin_[i] = j0;
+    std::vector<double> phi(nxi - j0);
+    for (int j = j0; j < nxi; ++j) phi[j - j0] = grid_.phi[grid_.index(i, j)];
+    top_.push_back(two_flux_column(phi, deta, m.d, m.epsilon, b));
+  }
+}
+
+double FilmOperator::top_irradiation(int i) const {
+  return cavity_ ? cavity_->H[cavity_->ring_of[i]] : kStefanBoltzmann * std::pow(model_.surface.T_env, 4);
+}
+
+namespace {
+double emissive_power(double T) { return kStefanBoltzmann * T * T * T * T; }
+}  // namespace
+
+double FilmOperator::top_absorbed(int i, int j, const double* T, double H) const {
+  const TwoFluxColumn& c = top_[i];
+  const int j0 = top_begin_[i], n = c.n, ns = n + 2, base = i * grid_.nxi, below = top_below(i);
+  double q = 0.0;
+  auto add_row = [&](const double* row) {
+    double s = row[n] * emissive_power(T[base + below]) + row[n + 1] * H;
+    for (int k = 0; k < n; ++k) s += row[k] * emissive_power(T[base + j0 + k]);
+    q += s;
+  };
+  if (j >= j0) add_row(&c.absorbed[static_cast<std::size_t>(j - j0) * ns]);
+  if (j == below) add_row(c.below.data());
+  return q;
+}
+
+double FilmOperator::top_escaping(int i, const double* T) const {
+  const TwoFluxColumn& c = top_[i];
+  const int j0 = top_begin_[i], n = c.n, base = i * grid_.nxi;
+  double s = c.leaving[n] * emissive_power(T[base + top_below(i)]);
+  for (int k = 0; k < n; ++k) s += c.leaving[k] * emissive_power(T[base + j0 + k]);
+  return s;
+}
+
+double FilmOperator::top_net_emitted(int i, const double* T, double H) const {
+  return top_escaping(i, T) - top_[i].emissivity() * H;
 }
 
 double FilmOperator::film_area() const { return grid_.perimeter * grid_.length; }
@@ -115,6 +176,13 @@ void FilmOperator::setup_cavity() {
     const bool ring = k < nr, plate = k == vf.annulus();
     double alpha = mat.alpha;
     c->eps[k] = mat.epsilon;
+    if (ring && two_flux()) {
+      // The ring's diffuse emissivity: the mean of its columns' two-flux emissivities, so that
+      // the ring's emission eps_k E_k is the mean of what its columns' tops emit.
+      double e = 0.0;
+      for (int i = c->ring_begin[k]; i < c->ring_begin[k + 1]; ++i) e += top_[i].emissivity();
+      c->eps[k] = e / (c->ring_begin[k + 1] - c->ring_begin[k]);
+    }
     if (!ring) {
       alpha = plate && cs.plate_absorptance >= 0 ? cs.plate_absorptance : cs.wall_absorptance;
       c->eps[k] = plate && cs.plate_emissivity >= 0 ? cs.plate_emissivity : cs.wall_emissivity;
@@ -169,7 +237,8 @@ void FilmOperator::update_cavity(const double* T, const Inputs& in) {
         const int b = c.ring_begin[k], e = c.ring_begin[k + 1];
         for (int i = b; i < e; ++i) {
           const double x = c.T_s[i];
-          E += sigma * x * x * x * x / (e - b);
+          // Two-flux top: what the column's top emits (independent of H), over the ring's emissivity.
+          E += (two_flux() ? top_escaping(i, T) / c.eps[k] : sigma * x * x * x * x) / (e - b);
           Tm += x / (e - b);
         }
       } else {
@@ -232,7 +301,18 @@ FilmOperator::Inputs FilmOperator::inputs_at(double t) const {
 
 double FilmOperator::k_bed(int p, double T) const {
   const double kc = model_.conductivity.k_constant;
-  return kc > 0 ? kc : model_.bed.k_bed(T, grid_.phi[p]);
+  if (kc > 0) return kc;
+  if (in_top_zone(p)) {
+    // The two-flux zone carries the radiation itself: no k_rad; below ZBS's range of solid
+    // fraction, Maxwell's conduction of dispersed spheres (thermal/film_top_radiation.hpp).
+    const double phi = grid_.phi[p];
+    if (phi < model_.film_top.zbs_min_phi)
+      return maxwell_dispersion_conductivity(model_.material.k_s, air_conductivity(std::max(T, 1.0)), phi);
+    BedConductivityModel no_rad = model_.bed;
+    no_rad.radiation = false;
+    return no_rad.k_bed(T, phi);
+  }
+  return model_.bed.k_bed(T, grid_.phi[p]);
 }
 
 double FilmOperator::k_mix(int p, double T) const {
@@ -272,9 +352,10 @@ FilmOperator::SurfaceState FilmOperator::surface(int i, double T_p, double kn, c
   // Open surface: eps sigma F (T^4 - T_env^4). Cavity: eps (sigma T^4 - H) with H the
   // thermal irradiation of the column's ring.
   const double F = c ? 1.0 : s.loss_factor;
-  const double eps_sigma_F = model_.material.epsilon * kStefanBoltzmann * F;
+  // Two-flux top: the thermal band is exchanged by the zone's cells, not at this surface.
+  const double eps_sigma_F = two_flux() ? 0.0 : model_.material.epsilon * kStefanBoltzmann * F;
   const double E_in = c ? c->H[c->ring_of[i]] : kStefanBoltzmann * std::pow(s.T_env, 4);
-  const double absorbed_in = model_.material.epsilon * F * E_in;
+  const double absorbed_in = two_flux() ? 0.0 : model_.material.epsilon * F * E_in;
   const double h = c ? c->h : s.h_conv;
   SurfaceState st;
   const double Aq = volumetric() ? 0.0 : model_.material.alpha * solar_irradiation(i, in);
@@ -370,6 +451,7 @@ double FilmOperator::cell_residual(int p, const double* T, const CellProps* pr, 
   // Volumetric absorption over the first particle layers, and an optional source.
   const double share = absorbed_share(i, j);
   if (share > 0) R += share * model_.material.alpha * solar_irradiation(i, in) * g.dz;
+  if (two_flux() && j >= top_below(i)) R += top_absorbed(i, j, T, top_irradiation(i)) * g.dz;
   if (model_.source) R += model_.source(g.zc[i], g.eta_center(i, j), in.t) * g.volume(i);
   return R;
 }
@@ -396,10 +478,16 @@ bool FilmOperator::jacobian(double t, const double* y, const double*, const Band
   if (!rhs(t, y, f0.data())) return false;
   std::vector<double> T(y, y + n);
   const Inputs in = inputs_at(t);
-  int rows[6];
+  std::vector<int> rows_buffer(6 + nxi);
+  int* rows = rows_buffer.data();
   for (long l = 0; l < n; ++l) {
     const int i = static_cast<int>(l) / nxi, j = static_cast<int>(l) % nxi;
     int nr = 0;
+    if (two_flux() && j >= top_below(i)) {
+      // The zone's cells and the cell below it all see each other's emission.
+      for (int k = top_below(i); k < nxi; ++k)
+        if (k < j - 1 || k > j + 1) rows[nr++] = i * nxi + k;
+    }
     rows[nr++] = static_cast<int>(l);
     if (j > 0) rows[nr++] = static_cast<int>(l) - 1;
     if (j + 1 < nxi) rows[nr++] = static_cast<int>(l) + 1;
@@ -488,8 +576,13 @@ double FilmOperator::steady_residual_floor(double t, const double* y) {
       G += s * std::abs(g.m_xi[i * (nxi + 1) + j]) * P.cp + harmonic(props_[p - 1].kn, P.kn) * g.dz / g.deta[i];
     }
     const double Tp = y[p];
+    if (two_flux() && j >= top_begin_[i]) {
+      const TwoFluxColumn& c = top_[i];
+      G += std::abs(c.absorbed[static_cast<std::size_t>(j - top_begin_[i]) * (c.n + 2) + j - top_begin_[i]]) * 4.0 *
+           kStefanBoltzmann * Tp * Tp * Tp * g.dz;
+    }
     if (j == nxi - 1) {
-      G += (radiative * Tp * Tp * Tp + h) * g.dz;
+      G += ((two_flux() ? 0.0 : radiative * Tp * Tp * Tp) + h) * g.dz;
     } else {
       G += s * std::abs(g.m_xi[i * (nxi + 1) + j + 1]) * P.cp + harmonic(props_[p + 1].kn, P.kn) * g.dz / g.deta[i];
     }
@@ -533,6 +626,22 @@ int FilmOperator::low_rank_jacobian(double t, const double* y, std::vector<doubl
   V.assign(static_cast<std::size_t>(n) * nr, 0.0);
   for (int i = 0; i < nz; ++i) {
     const int top = i * nxi + nxi - 1, k = c.ring_of[i];
+    if (two_flux()) {
+      // The ring's emission moves with every zone cell's (and the cell below's) emissive power,
+      // and every one of those cells absorbs a share of the ring's irradiation.
+      const TwoFluxColumn& col = top_[i];
+      const int members = c.ring_begin[k + 1] - c.ring_begin[k], ns = col.n + 2, base = i * nxi;
+      auto add = [&](int p, double leaving, double absorbs_H) {
+        const double Tp = y[p];
+        V[static_cast<std::size_t>(k) * n + p] += leaving * 4 * sg * Tp * Tp * Tp / (c.eps[k] * members);
+        const double scale = absorbs_H * grid_.dz / props_[p].capacity;
+        for (int j = 0; j < nr; ++j) U[static_cast<std::size_t>(j) * n + p] += scale * G[static_cast<std::size_t>(k) * nr + j];
+      };
+      for (int q = 0; q < col.n; ++q)
+        add(base + top_begin_[i] + q, col.leaving[q], col.absorbed[static_cast<std::size_t>(q) * ns + col.n + 1]);
+      add(base + top_below(i), col.leaving[col.n], col.below[col.n + 1]);
+      continue;
+    }
     const SurfaceState st = surface(i, y[top], props_[top].kn, in);
     const double Ts = st.T_s, rad = 4 * eps * sg * Ts * Ts * Ts;
     double dTs_dTp = 1.0, dflux_dH = eps;

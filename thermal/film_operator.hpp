@@ -14,6 +14,7 @@
 //                 conduction.
 // Every face flux is one function of its two sides, so the sum over cells telescopes to
 // the boundary powers and the steady energy balance closes to round-off.
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -22,6 +23,7 @@
 #include "film_field.hpp"
 #include "film_grid.hpp"
 #include "film_model.hpp"
+#include "film_top_radiation.hpp"
 #include "ode_system.hpp"
 
 namespace centrec::thermal {
@@ -131,6 +133,18 @@ class FilmOperator : public OdeSystem {
   void setup_cavity();
   double wall_loss(int i, double T_p, double kn) const;       // W/m2 out of the film
   double absorbed_share(int i, int j) const;                  // fraction of alpha q absorbed in cell
+  // Two-flux film top (thermal/film_top_radiation.hpp): the zone's first cell in column i, the
+  // cell below it that the zone's lower boundary belongs to, the irradiation from above, the
+  // thermal power absorbed in cell j (zone or the cell below; W/m2), the net thermal emission
+  // leaving the top (W/m2) and its part independent of H.
+  bool two_flux() const { return !top_.empty(); }
+  bool in_top_zone(int p) const { return two_flux() && p % grid_.nxi >= top_begin_[p / grid_.nxi]; }
+  int top_below(int i) const { return std::max(top_begin_[i] - 1, 0); }
+  double top_irradiation(int i) const;
+  double top_absorbed(int i, int j, const double* T, double H) const;
+  double top_net_emitted(int i, const double* T, double H) const;
+  double top_escaping(int i, const double* T) const;
+  void setup_film_top();
   bool volumetric() const {
     return model_.surface.absorb_depth_layers > 0 || model_.surface.extinction_depth_d != 0;
   }
@@ -146,6 +160,8 @@ class FilmOperator : public OdeSystem {
   std::vector<double> jac_scratch_;
   std::vector<double> extinction_depth_;  // per column, m (exponential solar absorption)
   std::vector<double> local_share_;       // per cell: absorbed share from the local phi (extinction_local)
+  std::vector<TwoFluxColumn> top_;        // per column: the two-flux zone's response (film_top.two_flux)
+  std::vector<int> top_begin_;            // per column: first cell of the zone
 
   struct Cavity {
     std::unique_ptr<CavityEnclosure> solar;  // reflectances 1 - alpha

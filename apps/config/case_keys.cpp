@@ -50,6 +50,7 @@ std::vector<Walk> walks() {
       {"instead of thermal.flux.q_film", thermal("flux: {q_aperture: 1.0e6}"), false, true},
       {"thermal.flux.profile: table", thermal("flux: {profile: table, table_file: no-such-table.csv}"), true},
       {"thermal.flux.absorption: layers", thermal("flux: {absorption: layers}")},
+      {"thermal.radiation.film_top: two_flux", thermal("radiation: {film_top: two_flux}")},
       {"thermal.conductivity.model: constant", thermal("conductivity: {model: constant, k: 1}")},
       {"thermal.heat_capacity.model: constant", thermal("heat_capacity: {model: constant, cp: 1000}")},
       {"", thermal("transient: {t_end: 10}")},

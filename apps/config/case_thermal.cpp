@@ -299,6 +299,17 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   th::CavitySettings& cav = m.cavity;
   cav.enabled = rad.choice("model", "cavity", {"cavity", "open_surface"},
                            "the drum interior as a grey enclosure, or an open surface with a loss factor") == "cavity";
+  // The thermal band in the film's top (docs/thermal_model.md, "The film top as a participating medium").
+  m.film_top.two_flux =
+      rad.choice("film_top", "surface", {"surface", "two_flux"},
+                 "thermal band of the film's top: the top cell emits as a grey surface (ZBS radiation below it), or "
+                 "the top film_top_depth_d emits and absorbs per cell as a participating medium (two-flux)") ==
+      "two_flux";
+  if (m.film_top.two_flux)
+    m.film_top.depth_d = rad.number("film_top_depth_d", m.film_top.depth_d, Range::closed(0.5, 100.0),
+                                    "particle diameters",
+                                    "depth below the surface of the two-flux zone (ZBS without its radiation term, "
+                                    "Maxwell's conduction below phi 0.4 there)");
   if (cav.enabled) {
     cav.aperture_diameter = rad.number("aperture_diameter", 0.0, Range::closed(0.0, 100.0), "m (0 = drum diameter)",
                                        "diameter of the aperture at z = L (cavity model)");

@@ -33,6 +33,17 @@ inline FilmModel centrec_model() {
   return m;
 }
 
+// The CentRec model inside a cavity of aperture 0.7 m under 300 kW/m2 on the film, sunlight
+// absorbed with the Beer-Lambert depth from the solid fraction.
+inline FilmModel cavity_model() {
+  FilmModel m = centrec_model();
+  m.flux.q = 3.0e5;
+  m.cavity.enabled = true;
+  m.cavity.aperture_diameter = 0.7;
+  m.surface.extinction_depth_d = -1.0;
+  return m;
+}
+
 // Plug flow: u uniform over the whole depth (no resting layer), uniform phi, no dispersion.
 inline FilmField plug_film(double thickness, double u, double phi, double drum_diameter, double length) {
   FilmField f;
@@ -45,6 +56,17 @@ inline FilmField plug_film(double thickness, double u, double phi, double drum_d
   f.drum_diameter = drum_diameter;
   f.length = length;
   f.particle_diameter = 1.2e-3;
+  return f;
+}
+
+// A 6 mm plug film at 0.05 m/s, 1 m drum and length, whose solid fraction is 0.55 up to 3.6 mm
+// and falls linearly to 0.10 at the surface (a loose top like the DEM film's), no dispersion.
+inline FilmField loose_top_film() {
+  FilmField f = plug_film(6e-3, 0.05, 0.55, 1.0, 1.0);
+  f.eta = {0.0, 3.6e-3, 6e-3};
+  f.u = {0.05, 0.05, 0.05, 0.05, 0.05, 0.05};
+  f.phi = {0.55, 0.55, 0.10, 0.55, 0.55, 0.10};
+  f.D = {0, 0, 0, 0, 0, 0};
   return f;
 }
 

@@ -172,11 +172,7 @@ TEST(SolarExtinction, LocalDepthMatchesARayTraceThroughARandomPacking) {
 
 TEST(SolarExtinction, OperatorTakesTheLocalDepth) {
   namespace tc = centrec::thermal::testcases;
-  FilmModel m = tc::centrec_model();
-  m.flux.q = 3.0e5;
-  m.cavity.enabled = true;
-  m.cavity.aperture_diameter = 0.7;
-  m.surface.extinction_depth_d = -1.0;
+  FilmModel m = tc::cavity_model();
   FilmGridSpec g;
   g.nz = 30;
   g.nxi = 24;
@@ -194,11 +190,7 @@ TEST(SolarExtinction, OperatorTakesTheLocalDepth) {
   const auto u_col = solve(uniform, false), u_loc = solve(uniform, true);
   std::printf("uniform film: T_out column mean %.10f K, local %.10f K\n", u_col.first.T_out, u_loc.first.T_out);
   EXPECT_NEAR(u_col.first.T_out, u_loc.first.T_out, 1e-8);
-  FilmField loose = uniform;
-  loose.eta = {0.0, 3.6e-3, 6e-3};
-  loose.u = {0.05, 0.05, 0.05, 0.05, 0.05, 0.05};
-  loose.phi = {0.55, 0.55, 0.10, 0.55, 0.55, 0.10};
-  loose.D = {0, 0, 0, 0, 0, 0};
+  const FilmField loose = tc::loose_top_film();
   const auto l_col = solve(loose, false), l_loc = solve(loose, true);
   std::printf("loose top: max surface T column mean %.2f K, local %.2f K; efficiency %.5f, %.5f; receiver residual "
               "%.2e of aperture power\n",
