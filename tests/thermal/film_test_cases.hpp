@@ -35,7 +35,7 @@ inline FilmModel centrec_model() {
 
 // The CentRec model inside a cavity of aperture 0.7 m under 300 kW/m2 on the film, sunlight
 // absorbed with the Beer-Lambert depth from the solid fraction.
-inline FilmModel cavity_model() {
+inline FilmModel cavity_model_q300k() {
   FilmModel m = centrec_model();
   m.flux.q = 3.0e5;
   m.cavity.enabled = true;

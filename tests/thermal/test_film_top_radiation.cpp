@@ -352,7 +352,7 @@ TEST(FilmTopRadiation, TwoFluxMatchesARayTraceThroughARandomPacking) {
 
 TEST(FilmTopRadiation, OperatorClosesTheCavityBalance) {
   namespace tc = centrec::thermal::testcases;
-  FilmModel m = tc::cavity_model();
+  FilmModel m = tc::cavity_model_q300k();
   m.surface.extinction_local = true;
   FilmGridSpec g;
   g.nz = 30;

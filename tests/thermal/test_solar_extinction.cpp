@@ -172,7 +172,7 @@ TEST(SolarExtinction, LocalDepthMatchesARayTraceThroughARandomPacking) {
 
 TEST(SolarExtinction, OperatorTakesTheLocalDepth) {
   namespace tc = centrec::thermal::testcases;
-  FilmModel m = tc::cavity_model();
+  FilmModel m = tc::cavity_model_q300k();
   FilmGridSpec g;
   g.nz = 30;
   g.nxi = 24;
