@@ -4,7 +4,7 @@
 flow.
 
 usage (from the repository root):
-  /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py slice-case DRUM_DIR [TIMES] > cases/slice_vs_drum_dd80/slice.yaml
+  /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py slice-case DRUM_DIR [TIMES] > cases/slice_vs_drum_dd80/slice_sq1.0.yaml
   /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py compare DRUM_DIR SLICE_DIR [OUT_DIR]
   /usr/bin/python3 docs/studies/slice_vs_drum_dd80.py ages DRUM_DIR [SLICE_DIR ...] [--out OUT_DIR]
   any of them with --window LO,HI: the drum's sections z/L in [LO, HI] instead of the
