@@ -4,6 +4,7 @@
 #include "io/atomic_write.hpp"
 #include "runs/dem_run.hpp"
 #include "runs/dem_run_report.hpp"
+#include "runs/interrupt.hpp"
 
 namespace centrec::runs {
 
@@ -17,6 +18,9 @@ io::DemRunResult run_dem_case(const config::CaseFile& cf, const config::DemCase&
                               const DemEngine& engine) {
   io::ensure_directory(out_dir);
   io::DemRunResult r = engine(cf, dc, out_dir);
+  // A Ctrl-C while the outputs are written waits for them (seconds) instead of losing the
+  // finished run; the caller sees it in InterruptGuard::received().
+  const InterruptGuard writing;
   write_dem_run_report(out_dir, cf, dc, r);
   return r;
 }

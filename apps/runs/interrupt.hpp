@@ -14,7 +14,8 @@ class InterruptGuard {
   ~InterruptGuard();  // restores the previous ones
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
-  // The signal received since the guard was installed (0 = none).
+  // The signal received since the last guard was installed (0 = none); it stays readable
+  // after that guard is gone.
   static int received();
 };
 

@@ -24,11 +24,13 @@ struct BinaryRun {
   std::string out, err;
 };
 
-// Starts `centrec args...`; with `interrupt_after` > 0 s sends it SIGINT then (once); with
-// `address_space` > 0 bytes the child runs under that limit (ulimit -v), so an allocation
-// beyond it fails as it would on a machine without the memory.
+// Starts `centrec args...`; with `interrupt_after` > 0 s sends it SIGINT then (once), counted
+// from the moment its stderr first holds `interrupt_on` when that is given (a phase of the
+// run, so the moment does not depend on how loaded the machine is); with `address_space` > 0
+// bytes the child runs under that limit (ulimit -v), so an allocation beyond it fails as it
+// would on a machine without the memory.
 inline BinaryRun run_binary(const std::vector<std::string>& args, double limit_s = 30.0, double interrupt_after = 0.0,
-                            std::size_t address_space = 0) {
+                            std::size_t address_space = 0, const std::string& interrupt_on = "") {
   const auto dir = std::filesystem::temp_directory_path();
   const std::string tag = std::to_string(::getpid());
   const std::string out_path = (dir / ("centrec_out_" + tag)).string(), err_path = (dir / ("centrec_err_" + tag)).string();
@@ -51,12 +53,18 @@ inline BinaryRun run_binary(const std::vector<std::string>& args, double limit_s
   BinaryRun r;
   const auto t0 = std::chrono::steady_clock::now();
   bool interrupted = false;
+  double armed_at = interrupt_on.empty() ? 0.0 : -1.0;  // when the count to the SIGINT started
   int status = 0;
   for (;;) {
     const pid_t w = ::waitpid(child, &status, WNOHANG);
     if (w == child) break;
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (interrupt_after > 0.0 && !interrupted && t >= interrupt_after) {
+    if (interrupt_after > 0.0 && armed_at < 0.0) {
+      std::ifstream in(err_path);
+      const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      if (err.find(interrupt_on) != std::string::npos) armed_at = t;
+    }
+    if (interrupt_after > 0.0 && !interrupted && armed_at >= 0.0 && t - armed_at >= interrupt_after) {
       ::kill(child, SIGINT);
       interrupted = true;
     }
