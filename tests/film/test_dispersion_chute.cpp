@@ -20,7 +20,7 @@
 //     >= 1 d from the wall) within 0.008-0.06: published dense-flow values are 0.027
 //     (Utter & Behringer 2004, 2D disks, 0.108 gamma_dot a^2 with a the radius) and 0.042
 //     (3D DEM heap flows of Fan et al., the prefactor of their segregation models); this
-//     material measures 0.012-0.021 at I 0.07-0.6, below both, and the band keeps a factor
+//     material measures 0.014-0.021 at I 0.07-0.6, below both, and the band keeps a factor
 //     ~1.5 below that for the scatter between turns. The local inertial number and
 //     mu = tau / P of each bin are printed beside it.
 #include <gtest/gtest.h>
