@@ -73,12 +73,23 @@ std::vector<BudgetInput> budget_inputs(const config::ThermalCase& c) {
                   "point-scattering theory (1.2 d)",
                   [](config::ThermalCase& x, double v) { x.model.surface.extinction_scale = v; }});
   if (c.model.conductivity.mixing)
-    in.push_back({"mixing D", "x film D", 1.0, 0.5, 7.2, "partly assumed",
-                  "upper: D/(gamma_dot d^2) = 0.108 of sheared beds (Utter & Behringer 2004) over the DEM's 0.015 in "
-                  "the sheared-bed test; lower assumed",
+    in.push_back({"mixing D", "x film D", 1.0, 0.5, 2.8, "partly assumed",
+                  "upper: D/(gamma_dot d^2) = 0.042 of 3D DEM dense flows (Fan et al. 2015; 2D disks measured: 0.027, "
+                  "Utter & Behringer 2004) over the DEM's 0.015 in the sheared-bed test (the estimator checked against "
+                  "raw trajectories, docs/film_sampling.md); lower assumed",
                   [](config::ThermalCase& x, double v) {
                     for (double& D : x.film.D) D *= v;
                   }});
+  // The film top's thermal band (docs/thermal_model.md, "The film top as a participating
+  // medium"): the two models are the ends, the case's own choice the nominal; a hypercube
+  // sample takes two_flux from 0.5 up. Only where two-flux can run: a 2D film, and in the
+  // open-surface model a loss factor of 1 (the film's emission then follows from the column).
+  if (!c.grid.lumped && (c.model.cavity.enabled || c.model.surface.loss_factor == 1.0))
+    in.push_back({"film top", "(0 surface, 1 two_flux)", c.model.film_top.two_flux ? 1.0 : 0.0, 0.0, 1.0,
+                  "model choice",
+                  "thermal.radiation.film_top: the top cell as a grey surface with ZBS radiation below, or the top "
+                  "film_top_depth_d as a two-flux participating medium (checked against a Monte Carlo ray trace)",
+                  [](config::ThermalCase& x, double v) { x.model.film_top.two_flux = v >= 0.5; }});
   in.push_back({"aperture power", "x", 1.0, 0.95, 1.05, "assumed",
                 "typical uncertainty of a measured aperture power or flux map; exact in a simulation",
                 [](config::ThermalCase& x, double v) { scale_flux(x.model.flux, v); }});

@@ -2,7 +2,7 @@
 // The error budget of a thermal case (docs/error_budget.md): the stated ranges of the
 // uncertain inputs (the particle's c_p, k_s, absorptance and emissivity from
 // thermal/particle_data.hpp; the cavity's convection, the Beer-Lambert depth, the film's
-// mixing and the aperture power) propagated to the outlet temperature, the receiver
+// mixing, the film-top radiation model and the aperture power) propagated to the outlet temperature, the receiver
 // efficiency and k_eff, one at a time and by a seeded Latin hypercube. Each sample is a
 // steady thermal solve of the case with the inputs changed; nothing else is changed.
 #include <functional>
@@ -20,13 +20,13 @@ namespace centrec::runs {
 struct BudgetInput {
   std::string name, unit;
   double nominal = 0.0, lo = 0.0, hi = 0.0;
-  std::string basis;   // "published", "partly assumed" or "assumed"
+  std::string basis;   // "published", "partly assumed", "assumed" or "model choice"
   std::string source;  // where the value and the range come from
   std::function<void(config::ThermalCase&, double)> apply;
 };
 
 // The inputs that act on this case: a mixing range only with mixing on, a Beer-Lambert range
-// only with extinction absorption.
+// only with extinction absorption, the film-top model only where two-flux can run.
 std::vector<BudgetInput> budget_inputs(const config::ThermalCase& c);
 
 struct BudgetOutputs {

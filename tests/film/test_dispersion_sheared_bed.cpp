@@ -2,12 +2,15 @@
 // slice of the quickstart's drum (D/d 25, 320.16 rpm, rough wall) flowing along the drum
 // under gravity's axial part (`slow` label: minutes on a busy 2-core machine). In its dense
 // sheared bins (phi >= 0.3, gamma_dot >= 10 1/s) the measured D / (gamma_dot d^2),
-// gamma_dot = du/deta of the measured axial velocity profile, lies within 0.005-0.2: the
-// order of the published gradient-direction self-diffusion of dense granular shear flows
-// (Utter & Behringer 2004, Phys. Rev. E 69, 031308: D proportional to the local shear rate,
-// about 0.1 gamma_dot d^2 as fitted by Trewhela, Ancey & Gray 2021, J. Fluid Mech. 916,
-// A55), with a factor ~20 below it for the scatter between flows and inertial numbers.
-// Measured: 0.0164 and 0.0137 at phi 0.49 and 0.38 (the run of docs/film_sampling.md).
+// gamma_dot = du/deta of the measured axial velocity profile, lies within 0.008-0.05.
+// Published gradient-direction self-diffusion of dense granular shear flows scales with the
+// local shear rate: 0.108 gamma_dot a^2 with a the particle radius, i.e. 0.027 gamma_dot d^2
+// (Utter & Behringer 2004, Phys. Rev. E 69, 031308, 2D disks); 0.042 gamma_dot d^2 in 3D
+// DEM heap flows (Fan et al. 2015, the prefactor of their segregation models). This
+// material measures 0.014-0.021 in a uniform chute flow on the same wall, the estimator
+// checked there against raw trajectories (test_dispersion_chute.cpp); the band keeps a
+// factor ~1.5 of margin below that and above the 3D value.
+// Measured: 0.0210 and 0.0161 at phi 0.49 and 0.40 (the run of docs/film_sampling.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,8 +61,8 @@ TEST(DispersionScene, DenseShearedSliceWithinPublishedRange) {
     lo = std::min(lo, ratio);
     hi = std::max(hi, ratio);
   }
-  std::printf("dense sheared bins: %d, D/(gamma_dot d^2) from %.4f to %.4f (accepted 0.005-0.2)\n", checked, lo, hi);
+  std::printf("dense sheared bins: %d, D/(gamma_dot d^2) from %.4f to %.4f (accepted 0.008-0.05)\n", checked, lo, hi);
   ASSERT_GE(checked, 2);
-  EXPECT_GE(lo, 0.005);
-  EXPECT_LE(hi, 0.2);
+  EXPECT_GE(lo, 0.008);
+  EXPECT_LE(hi, 0.05);
 }

@@ -116,7 +116,8 @@ thermal:
   radiation: {model: cavity, tilt_deg: 45}
 )"));
   const std::vector<runs::BudgetInput> inputs = runs::budget_inputs(c);
-  EXPECT_EQ(inputs.size(), 10u);  // the particle's four, convection, wind, spillage, Beer-Lambert depth, mixing, aperture power
+  // The particle's four, convection, wind, spillage, Beer-Lambert depth, mixing, film top, aperture power.
+  EXPECT_EQ(inputs.size(), 11u);
   const runs::BudgetOutputs nominal = runs::budget_outputs_at(c);
   for (const runs::BudgetInput& in : inputs) {
     config::ThermalCase x = c;
@@ -128,6 +129,44 @@ thermal:
                 o.T_out - nominal.T_out, o.efficiency - nominal.efficiency, o.k_eff - nominal.k_eff);
     EXPECT_GT(moved, 1e-5) << in.name;
   }
+}
+
+// The film-top row carries the case's thermal.radiation.film_top as its nominal (0 surface,
+// 1 two_flux), sets the model at either end, and is left out where two-flux cannot run (a
+// depth-lumped film, an open surface whose loss factor is not 1).
+TEST(ThermalBudget, FilmTopRowFollowsTheCase) {
+  const std::string film =
+      "film:\n  analytic: {thickness: 6.0e-3, u_surface: 0.02015, phi: 0.55, D_shear_coeff: 0.05, drum_diameter: 0.12, "
+      "length: 0.171}\n";
+  auto inputs_of = [&](const std::string& name, const std::string& thermal) {
+    const config::ThermalCase c =
+        config::read_thermal_case(write_case(temp_dir("budget_film_top_" + name), "title: film top\n" + film + "thermal:\n" + thermal));
+    return runs::budget_inputs(c);
+  };
+  auto film_top = [](const std::vector<runs::BudgetInput>& in) -> const runs::BudgetInput* {
+    for (const auto& i : in)
+      if (i.name == "film top") return &i;
+    return nullptr;
+  };
+  const auto two = inputs_of("two_flux", "  grid: {nz: 10, nxi: 10}\n  radiation: {model: cavity, film_top: two_flux}\n");
+  const auto surf = inputs_of("surface", "  grid: {nz: 10, nxi: 10}\n  radiation: {model: cavity}\n");
+  const auto lumped = inputs_of("lumped", "  model: 1d\n  grid: {nz: 10}\n  radiation: {model: cavity}\n");
+  const auto lossy = inputs_of("lossy", "  grid: {nz: 10, nxi: 10}\n  radiation: {model: open_surface}\n"
+                                        "  surface: {loss_factor: 0.5}\n");
+  ASSERT_NE(film_top(two), nullptr);
+  ASSERT_NE(film_top(surf), nullptr);
+  EXPECT_EQ(film_top(two)->nominal, 1.0);
+  EXPECT_EQ(film_top(surf)->nominal, 0.0);
+  EXPECT_EQ(film_top(lumped), nullptr);
+  EXPECT_EQ(film_top(lossy), nullptr);
+  const config::ThermalCase c = config::read_thermal_case(
+      write_case(temp_dir("budget_film_top_apply"), "title: film top\n" + film +
+                                     "thermal:\n  grid: {nz: 10, nxi: 10}\n  radiation: {model: cavity}\n"));
+  config::ThermalCase x = c;
+  film_top(surf)->apply(x, film_top(surf)->hi);
+  EXPECT_TRUE(x.model.film_top.two_flux);
+  film_top(surf)->apply(x, film_top(surf)->lo);
+  EXPECT_FALSE(x.model.film_top.two_flux);
 }
 
 // The DEM's spread over seeds, read from a `centrec run --replicas` summary, adds to the

@@ -188,7 +188,7 @@ TEST(ThermalCli, BudgetWritesItsTableAndRefusesADemFilmItDoesNotHave) {
   EXPECT_EQ(b["latin_hypercube"]["samples"], 12);
   EXPECT_EQ(b["latin_hypercube"]["seed"], 7);
   EXPECT_EQ(b["latin_hypercube"]["outputs"].size(), 12u);
-  ASSERT_EQ(b["inputs"].size(), 10u);  // with the cavity's wind speed and spillage
+  ASSERT_EQ(b["inputs"].size(), 11u);  // with the cavity's wind speed and spillage and the film-top model
   for (const auto& in : b["inputs"]) {
     EXPECT_LT(in["lo"].get<double>(), in["hi"].get<double>()) << in.dump();
     EXPECT_TRUE(in["at_lo"].contains("T_out_K") && in["at_hi"].contains("efficiency")) << in.dump();
