@@ -301,9 +301,16 @@ def particle_ages(f, cfg, summary):
     glued layer, initial film, then fed particles in insertion order (dem/scene/feeder.cpp);
     particles present from the start get age +inf."""
     m = cfg["particles"]["density"] * np.pi / 6.0 * cfg["particles"]["diameter"] ** 3
-    first_fed = int(summary["glued_particles"]) + int(cfg["initial_film"]["particles"])
     mf = f["mass_flow"]
     t, fed_n = mf["time"][:], mf["fed"][:] / m
+    if cfg["initial_film"].get("from_run"):
+        # A settled start lays another run's film, as many particles as that run left: the
+        # first fed id follows the largest id of the earliest snapshot, less what was fed by then.
+        g = min(f["snapshots"].values(), key=lambda g: float(g.attrs["time"]))
+        fed_then = int(round(np.interp(float(g.attrs["time"]), t, fed_n)))
+        first_fed = int(g["id"][:].max()) + 1 - fed_then
+    else:
+        first_fed = int(summary["glued_particles"]) + int(cfg["initial_film"]["particles"])
 
     def ages(ids, t_now):
         k = ids - first_fed
