@@ -137,11 +137,9 @@ int cmd_dem(const Args& args) {
   } catch (const runs::RunInterrupted& e) {
     std::fprintf(stderr, "centrec dem: %s\n  continue with: centrec dem --resume %s\n", e.what(), opt.out_dir.c_str());
     return 128 + e.signal();
-  }
-  if (const int signal = runs::InterruptGuard::received()) {
-    std::fprintf(stderr, "centrec dem: %s while the outputs were written: the run is complete in %s; no figures drawn\n",
-                 runs::signal_name(signal).c_str(), opt.out_dir.c_str());
-    return 128 + signal;
+  } catch (const runs::OutputsInterrupted& e) {
+    std::fprintf(stderr, "centrec dem: %s; no figures drawn\n", e.what());
+    return 128 + e.signal();
   }
   if (!opt.no_plots) run_plot_script("centrec dem", "plot_dem.py", {opt.out_dir});
   return 0;

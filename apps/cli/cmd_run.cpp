@@ -178,6 +178,10 @@ int cmd_run(const Args& args) {
     std::fprintf(stderr, "centrec run: %s\n  continue with the same command: its DEM resumes from that checkpoint\n",
                  e.what());
     return 128 + e.signal();
+  } catch (const runs::OutputsInterrupted& e) {
+    std::fprintf(stderr, "centrec run: the DEM's %s; the thermal stage was not run\n  continue with the same command\n",
+                 e.what());
+    return 128 + e.signal();
   }
   runs::write_coupled_h5(out_dir, r, runs::case_provenance(cf.path, cf.resolved_yaml));
   nlohmann::json s = runs::coupled_summary(r);

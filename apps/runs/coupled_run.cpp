@@ -14,6 +14,7 @@
 #include "runs/dem_cache.hpp"
 #include "runs/dem_case_run.hpp"
 #include "runs/earlier_dem_run.hpp"
+#include "runs/interrupt.hpp"
 
 namespace centrec::runs {
 
@@ -75,11 +76,18 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
       r.dem_summary = earlier_dem_run_summary(cf.resolved_yaml, o.dem_from);
     } else {
       r.cache_key = dem_cache_key(cf.resolved_yaml, r.dem, centrec::io::code_version());
+      // A Ctrl-C while the DEM wrote its outputs stops the run once the cache holds them.
+      std::optional<OutputsInterrupted> stopped;
       const CachedDem cached = cached_dem_run(o.cache_dir, r.cache_key, [&](const std::string& dir, bool resume) {
         if (resume) std::fprintf(stderr, "centrec run: continuing the interrupted DEM run in %s\n", dir.c_str());
         const auto from = resume ? std::optional<io::RunCheckpoint>(io::read_checkpoint(dir)) : std::nullopt;
-        ran = run_dem_case(cf, r.dem, dir, native_engine(from));
+        try {
+          ran = run_dem_case(cf, r.dem, dir, native_engine(from));
+        } catch (const OutputsInterrupted& e) {
+          stopped = e;
+        }
       });
+      if (stopped) throw OutputsInterrupted(stopped->signal(), cached.dir);
       r.dem_dir = cached.dir;
       r.dem_cached = cached.hit;
       r.dem_resumed_from = cached.resumed_from;

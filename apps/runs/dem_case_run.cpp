@@ -19,9 +19,12 @@ io::DemRunResult run_dem_case(const config::CaseFile& cf, const config::DemCase&
   io::ensure_directory(out_dir);
   io::DemRunResult r = engine(cf, dc, out_dir);
   // A Ctrl-C while the outputs are written waits for them (seconds) instead of losing the
-  // finished run; the caller sees it in InterruptGuard::received().
-  const InterruptGuard writing;
-  write_dem_run_report(out_dir, cf, dc, r);
+  // finished run, then stops the caller.
+  {
+    const InterruptGuard writing;
+    write_dem_run_report(out_dir, cf, dc, r);
+  }
+  if (const int signal = InterruptGuard::received()) throw OutputsInterrupted(signal, out_dir);
   return r;
 }
 

@@ -50,4 +50,8 @@ RunInterrupted::RunInterrupted(int signal, double time, std::string checkpoint_d
       signal_(signal),
       dir_(std::move(checkpoint_dir)) {}
 
+OutputsInterrupted::OutputsInterrupted(int signal, const std::string& dir)
+    : std::runtime_error(signal_name(signal) + " while the outputs were written: the run is complete in " + dir),
+      signal_(signal) {}
+
 }  // namespace centrec::runs

@@ -31,6 +31,18 @@ class RunInterrupted : public std::runtime_error {
   std::string dir_;
 };
 
+// A signal that arrived while a finished run wrote its outputs: they were written first,
+// so the run is complete in `dir`; what would have followed (plots, the thermal stage of a
+// coupled run) is not done.
+class OutputsInterrupted : public std::runtime_error {
+ public:
+  OutputsInterrupted(int signal, const std::string& dir);
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
+
 // "SIGINT", "SIGTERM" or "signal N".
 std::string signal_name(int signal);
 
