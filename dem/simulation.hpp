@@ -192,6 +192,12 @@ class Simulation {
   // must already hold the same materials, interactions and walls (as the scene builds
   // them from its config): a difference is refused with std::invalid_argument.
   void import_state(const SimulationState& s);
+  // Contact histories for the particles added so far, before setup(): a film laid in from
+  // an earlier run keeps its tangential and rolling springs loaded (a settled start,
+  // dem/scene/settled_start.hpp) instead of slipping until they load again. Pairs and
+  // walls by particle id; the first rebuild carries them into the list. Throws
+  // std::invalid_argument after setup() or on an unknown id or wall.
+  void preset_contact_histories(const std::vector<PairHistoryEntry>& pairs, const std::vector<WallHistoryEntry>& walls);
   // The per-particle arrays a state carries, in the engine's list order (below):
   // f(name, units, array). The checkpoint file stores each as /engine/<name>.
   template <class F>

@@ -20,6 +20,33 @@ bool same(const Material& a, const Material& b) {
   throw std::invalid_argument("import_state: the state does not fit this engine: " + what);
 }
 
+// Pair histories keyed by ids as a carried list (row = lower index) for the next rebuild to
+// pick up. Throws with `refuse` on an id the engine does not hold.
+template <class Refuse>
+NeighbourList carried_list(const std::vector<PairHistoryEntry>& pairs,
+                           const std::unordered_map<std::int64_t, std::int32_t>& index_of_id, std::size_t n,
+                           Refuse&& refuse) {
+  std::vector<std::vector<std::pair<std::int32_t, ContactHistory>>> rows(n);
+  for (const PairHistoryEntry& p : pairs) {
+    const auto a = index_of_id.find(p.id_lo), b = index_of_id.find(p.id_hi);
+    if (a == index_of_id.end() || b == index_of_id.end() || !(p.id_lo < p.id_hi))
+      refuse("contact history names unknown or unordered ids " + std::to_string(p.id_lo) + ", " +
+             std::to_string(p.id_hi));
+    const std::int32_t i = std::min(a->second, b->second), j = std::max(a->second, b->second);
+    rows[static_cast<std::size_t>(i)].push_back({j, p.history});
+  }
+  NeighbourList carried;
+  carried.start.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const auto& [j, h] : rows[i]) {
+      carried.nbr.push_back(j);
+      carried.hist.push_back(h);
+    }
+    carried.start[i + 1] = static_cast<std::uint32_t>(carried.nbr.size());
+  }
+  return carried;
+}
+
 }  // namespace
 
 SimulationState Simulation::export_state() const {
@@ -96,26 +123,8 @@ void Simulation::import_state(const SimulationState& s) {
   });
   for (std::size_t i = 0; i < n; ++i) set_mass_properties(i);  // as add_particle does
 
-  // The pair histories as a carried list (row = lower index), for the rebuild to pick up.
-  std::vector<std::vector<std::pair<std::int32_t, ContactHistory>>> rows(n);
-  for (const PairHistoryEntry& p : s.pair_history) {
-    const auto a = index_of_id.find(p.id_lo), b = index_of_id.find(p.id_hi);
-    if (a == index_of_id.end() || b == index_of_id.end() || !(p.id_lo < p.id_hi))
-      refuse("contact history names unknown or unordered ids " + std::to_string(p.id_lo) + ", " +
-             std::to_string(p.id_hi));
-    const std::int32_t i = std::min(a->second, b->second), j = std::max(a->second, b->second);
-    rows[static_cast<std::size_t>(i)].push_back({j, p.history});
-  }
-  NeighbourList carried;
-  carried.start.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (const auto& [j, h] : rows[i]) {
-      carried.nbr.push_back(j);
-      carried.hist.push_back(h);
-    }
-    carried.start[i + 1] = static_cast<std::uint32_t>(carried.nbr.size());
-  }
-  impl_->carried = std::move(carried);
+  // The pair histories as a carried list, for the rebuild to pick up.
+  impl_->carried = carried_list(s.pair_history, index_of_id, n, [](const std::string& w) { refuse(w); });
   impl_->list = NeighbourList{};
   dirty_ = true;
 
@@ -123,6 +132,29 @@ void Simulation::import_state(const SimulationState& s) {
   dt_ = s.dt;
   rebuild();  // the rebuild the exporting run made in rebuild_lists(); forces are kept
   ready_ = true;
+}
+
+void Simulation::preset_contact_histories(const std::vector<PairHistoryEntry>& pairs,
+                                          const std::vector<WallHistoryEntry>& walls) {
+  auto refuse_preset = [](const std::string& what) -> void {
+    throw std::invalid_argument("preset_contact_histories: " + what);
+  };
+  if (ready_) refuse_preset("only before setup(): a built list holds the contacts already");
+  const std::size_t n = x_.size();
+  std::unordered_map<std::int64_t, std::int32_t> index_of_id;
+  index_of_id.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) index_of_id.emplace(id_[i], static_cast<std::int32_t>(i));
+  impl_->carried = carried_list(pairs, index_of_id, n, refuse_preset);
+  impl_->list = NeighbourList{};
+  dirty_ = true;
+  const std::size_t nw = walls_.size();
+  for (const WallHistoryEntry& h : walls) {
+    const auto a = index_of_id.find(h.id);
+    if (a == index_of_id.end() || h.wall < 0 || static_cast<std::size_t>(h.wall) >= nw)
+      refuse_preset("wall history names unknown particle " + std::to_string(h.id) + " or wall " +
+                    std::to_string(h.wall));
+    wall_hist_[static_cast<std::size_t>(a->second) * nw + static_cast<std::size_t>(h.wall)] = h.history;
+  }
 }
 
 }  // namespace centrec::dem

@@ -23,6 +23,13 @@ struct PairHistoryEntry {
   ContactHistory history;             // non-zero (zero = not in contact, not stored)
 };
 
+// A particle's history with one wall (by the engine's wall index).
+struct WallHistoryEntry {
+  std::int64_t id = 0;
+  int wall = 0;
+  ContactHistory history;
+};
+
 struct SimulationState {
   double time = 0.0;        // s
   std::int64_t step = 0;    // steps taken

@@ -41,9 +41,10 @@ dem::scene::CentrecScene set_up(const config::CaseFile& cf, const config::DemCas
                   : "building the drum, its rough wall and the initial film");
   dem::scene::SceneConfig start = dc.scene;
   if (!ck && !dc.initial_film_from_run.empty()) {
-    start.initial_film.settled = settled_start(cf, dc);
-    std::fprintf(stderr, "  settled start: %zu free particles from the last state of %s\n",
-                 start.initial_film.settled.size(), dc.initial_film_from_run.c_str());
+    start.initial_film = settled_start(cf, dc);
+    std::fprintf(stderr, "  settled start: %zu free particles from the last state of %s, %zu contacts kept (%zu with walls)\n",
+                 start.initial_film.settled.size(), dc.initial_film_from_run.c_str(),
+                 start.initial_film.settled_contacts.size(), start.initial_film.settled_wall_contacts.size());
   }
   return ck ? dem::scene::CentrecScene(dc.scene, ck->scene) : dem::scene::CentrecScene(start);
 }

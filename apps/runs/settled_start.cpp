@@ -22,7 +22,7 @@ config::CaseFile drum_case_of(const io::RunCheckpoint& ck) {
   return cf;
 }
 
-std::vector<dem::scene::InitialFilmSpec::Particle> settled_start(const config::CaseFile& cf, const config::DemCase& dc) {
+dem::scene::InitialFilmSpec settled_start(const config::CaseFile& cf, const config::DemCase& dc) {
   std::string dir = dc.initial_film_from_run;
   const std::string case_dir = config::case_directory(cf.path);
   if (!dir.empty() && dir[0] != '/' && !case_dir.empty()) dir = case_dir + "/" + dir;

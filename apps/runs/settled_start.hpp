@@ -15,8 +15,9 @@ namespace centrec::runs {
 // Throws std::invalid_argument if it has no dem: section.
 config::CaseFile drum_case_of(const io::RunCheckpoint& ck);
 
-// The settled film for dc's drum from the run named by dc.initial_film_from_run (relative
-// to cf's folder). Throws config::ConfigError naming the key and the reason.
-std::vector<dem::scene::InitialFilmSpec::Particle> settled_start(const config::CaseFile& cf, const config::DemCase& dc);
+// dc's initial film, settled from the run named by dc.initial_film_from_run (relative to
+// cf's folder): its particles and their contact histories. Throws config::ConfigError
+// naming the key and the reason.
+dem::scene::InitialFilmSpec settled_start(const config::CaseFile& cf, const config::DemCase& dc);
 
 }  // namespace centrec::runs

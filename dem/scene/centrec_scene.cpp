@@ -132,7 +132,16 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
   }
 
   if (!cfg_.initial_film.settled.empty()) {
-    for (const InitialFilmSpec::Particle& q : cfg_.initial_film.settled) sim_->add_particle({p, q.radius, q.x, q.v, q.w});
+    const InitialFilmSpec& film = cfg_.initial_film;
+    // The histories are numbered glued first, then the film (dem/scene/settled_start.hpp).
+    const std::int64_t first = sim_->add_particle({p, film.settled[0].radius, film.settled[0].x, film.settled[0].v,
+                                                   film.settled[0].w});
+    if (first != glued_) throw std::logic_error("settled start: the film's first id is not the glued count");
+    for (std::size_t k = 1; k < film.settled.size(); ++k) {
+      const InitialFilmSpec::Particle& q = film.settled[k];
+      sim_->add_particle({p, q.radius, q.x, q.v, q.w});
+    }
+    sim_->preset_contact_histories(film.settled_contacts, film.settled_wall_contacts);
   } else if (cfg_.initial_film.particles > 0) {
     SizeSampler sizes(cfg_.particle, cfg_.seed + 1);
     std::vector<double> radii(static_cast<std::size_t>(cfg_.initial_film.particles));

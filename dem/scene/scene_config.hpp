@@ -70,8 +70,13 @@ struct InitialFilmSpec {
   struct Particle {
     double radius = 0.0;  // m
     Vec3 x, v, w;         // m, m/s, rad/s
+    std::int64_t source_id = -1;  // its id in the run it comes from
   };
   std::vector<Particle> settled;
+  // The settled film's contact histories (a drum's film only), numbered as the scene adds
+  // its particles: the glued spheres 0..G-1 in lattice order, then `settled` in order.
+  std::vector<PairHistoryEntry> settled_contacts;
+  std::vector<WallHistoryEntry> settled_wall_contacts;
   // Fraction of the settled film kept in every axial section of one diameter, its top (the
   // particles nearest the axis) left out: a fed drum holds less than the developed film of
   // the slice it is laid from (docs/centrec_scene.md "Settled start"). 1 keeps all.

@@ -14,11 +14,14 @@
 
 namespace centrec::dem::scene {
 
-// The free particles of `state` (a run of `source`) for a drum of `target`. Throws
-// std::invalid_argument naming the setting that differs (drum diameter, rough wall,
+// The initial film of `target` (a drum) from `state`, the last state of a run of `source`:
+// its free particles in `settled`, and, when the source is a drum, their contact histories
+// with each other, with the glued spheres (matched by lattice position) and with the walls
+// (when both drums have the same walls), turned back with the drum as the particles are.
+// Throws std::invalid_argument naming the setting that differs (drum diameter, rough wall,
 // particle size, a slice whose lattice rows do not continue along the drum) or when the
-// target is a slice. Particles that would cross the back plate or the outlet are left out.
-std::vector<InitialFilmSpec::Particle> settled_film(const SceneConfig& source, const SimulationState& state,
-                                                    const SceneConfig& target);
+// target is a slice. A slice copy that would cross the back plate or the outlet is left
+// out, and so is a drum particle past the target's length.
+InitialFilmSpec settled_film(const SceneConfig& source, const SimulationState& state, const SceneConfig& target);
 
 }  // namespace centrec::dem::scene

@@ -8,10 +8,12 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 
 #include "dem/scene/centrec_scene.hpp"
+#include "dem/first_half_step.hpp"
 #include "dem/scene/settled_start.hpp"
 #include "dem/scene/wall_lattice.hpp"
 #include "slice_case.hpp"
@@ -35,6 +37,12 @@ double smallest_gap(const std::vector<Vec3>& x, const std::vector<double>& r, co
   return gap;
 }
 
+// cfg with `film` as its initial film.
+SceneConfig film_config(SceneConfig cfg, const InitialFilmSpec& film) {
+  cfg.initial_film = film;
+  return cfg;
+}
+
 }  // namespace
 
 TEST(SettledStart, SliceFilmLaidAlongTheDrumSitsInItsLattice) {
@@ -51,7 +59,7 @@ TEST(SettledStart, SliceFilmLaidAlongTheDrumSitsInItsLattice) {
   drum.drum.length = 20 * d;
   drum.feeder.enabled = false;
   drum.drum.omega = 1.1 * slice.drum.omega;  // a nearby operating point
-  const std::vector<InitialFilmSpec::Particle> film = settled_film(slice, state, drum);
+  const std::vector<InitialFilmSpec::Particle> film = settled_film(slice, state, drum).settled;
 
   // Holdup per length: the slice's free mass per period, over the drum's length less the
   // ends (particles crossing the back plate or the outlet are left out).
@@ -149,9 +157,9 @@ TEST(SettledStart, HoldupFractionKeepsEachSectionsBase) {
   drum.slice.target_mass_flow = 0.0;
   drum.drum.length = 20 * d;
   drum.feeder.enabled = false;
-  const std::vector<InitialFilmSpec::Particle> all = settled_film(slice, state, drum);
+  const std::vector<InitialFilmSpec::Particle> all = settled_film(slice, state, drum).settled;
   drum.initial_film.holdup_fraction = 0.6;
-  const std::vector<InitialFilmSpec::Particle> thin = settled_film(slice, state, drum);
+  const std::vector<InitialFilmSpec::Particle> thin = settled_film(slice, state, drum).settled;
 
   auto rho = [](const InitialFilmSpec::Particle& p) { return std::hypot(p.x.x, p.x.y); };
   const int sections = 20;
@@ -179,5 +187,154 @@ TEST(SettledStart, HoldupFractionKeepsEachSectionsBase) {
   EXPECT_EQ(left_out_below_kept, 0);
 
   drum.initial_film.holdup_fraction = 1.0;
-  EXPECT_EQ(settled_film(slice, state, drum).size(), all.size());
+  EXPECT_EQ(settled_film(slice, state, drum).settled.size(), all.size());
+}
+
+namespace {
+
+// A short closed drum (back plate and outlet lip) of the slice's diameter on the rough wall,
+// a loose film of `particles`, dt a whole turn's 1/10000 so that a run of whole turns ends
+// with the lattice where it started (to round-off).
+SceneConfig short_drum(std::int64_t particles) {
+  SceneConfig c = centrec::testing::controlled_slice(particles, 0.0);
+  c.threads = 1;
+  c.slice.enabled = false;
+  c.feeder.enabled = false;
+  c.drum.length = 8 * c.particle.diameter;
+  c.drum.lip_height = 3 * c.particle.diameter;
+  c.dt = turn_period(c) / 10000.0;
+  return c;
+}
+
+// The free particles' positions by id.
+std::map<std::int64_t, Vec3> free_positions(const Simulation& sim) {
+  std::map<std::int64_t, Vec3> x;
+  for (std::size_t i = 0; i < sim.size(); ++i)
+    if (sim.motions()[i] == Motion::free) x[sim.ids()[i]] = sim.positions()[i];
+  return x;
+}
+
+}  // namespace
+
+// A drum's film laid into the same drum keeps its contact histories: the engine holds
+// every contact of the kept particles (with each other, with the glued spheres matched by
+// lattice position, with the walls), turned back with the drum; and the laid film goes on
+// as the drum itself goes on. Without the histories the springs start unloaded and the
+// film slips until they load again (a nearby operating point's start surged to 1.5x its
+// feed in its first turn, docs/benchmarks.md "The fed drum").
+TEST(SettledStart, DrumFilmKeepsItsContactsAndGoesOnAsTheDrumDoes) {
+  const SceneConfig cfg = short_drum(300);
+  CentrecScene source(cfg);
+  source.advance(turn_period(cfg));  // one turn: the film settles, its springs load
+  source.simulation().rebuild_lists();
+  const SimulationState state = source.simulation().export_state();
+
+  const InitialFilmSpec film = settled_film(cfg, state, cfg);
+  // Expected: every contact of the source between two laid particles, or a laid one and a
+  // glued sphere, and every non-zero wall history of a laid particle.
+  std::map<std::int64_t, std::int64_t> number;  // source id -> the new scene's id
+  std::int64_t glued = 0;
+  for (std::size_t i = 0; i < state.id.size(); ++i) glued += state.motion[i] != Motion::free;
+  for (std::size_t i = 0; i < state.id.size(); ++i)
+    if (state.motion[i] != Motion::free) number[state.id[i]] = state.id[i];  // the lattice is built in the same order
+  for (std::size_t k = 0; k < film.settled.size(); ++k) number[film.settled[k].source_id] = glued + static_cast<std::int64_t>(k);
+  std::size_t expected = 0, with_glued = 0;
+  double norm_src = 0.0;
+  for (const PairHistoryEntry& e : state.pair_history) {
+    const auto a = number.find(e.id_lo), b = number.find(e.id_hi);
+    if (a == number.end() || b == number.end() || (a->second < glued && b->second < glued)) continue;
+    ++expected;
+    with_glued += a->second < glued || b->second < glued;
+    norm_src += norm(e.history.shear) + norm(e.history.roll);
+  }
+  std::size_t wall_expected = 0;
+  const std::size_t walls = state.wall_origins.size();
+  for (std::size_t i = 0; i < state.id.size(); ++i)
+    for (std::size_t w = 0; w < walls; ++w)
+      wall_expected += state.motion[i] == Motion::free && number.count(state.id[i]) && !is_zero(state.wall_history[i * walls + w]);
+
+  // What the new engine holds after its set-up, by its own export.
+  CentrecScene laid(film_config(cfg, film));
+  const SimulationState held = laid.simulation().export_state();
+  const double c = std::cos(state.drum_angle), s = std::sin(state.drum_angle);
+  std::map<std::pair<std::int64_t, std::int64_t>, ContactHistory> src;  // by the new ids, turned back
+  for (const PairHistoryEntry& e : state.pair_history) {
+    const auto a = number.find(e.id_lo), b = number.find(e.id_hi);
+    if (a == number.end() || b == number.end()) continue;
+    const double sign = a->second < b->second ? 1.0 : -1.0;  // the history is the lower id's
+    src[{std::min(a->second, b->second), std::max(a->second, b->second)}] = ContactHistory{
+        sign * rotate(e.history.shear, {0, 0, 1}, c, -s), sign * rotate(e.history.roll, {0, 0, 1}, c, -s)};
+  }
+  std::size_t held_pairs = 0, unequal = 0;
+  double norm_held = 0.0;
+  for (const PairHistoryEntry& e : held.pair_history) {
+    if (e.id_lo < glued && e.id_hi < glued) continue;
+    ++held_pairs;
+    norm_held += norm(e.history.shear) + norm(e.history.roll);
+    const auto it = src.find({e.id_lo, e.id_hi});
+    if (it == src.end() || norm(it->second.shear - e.history.shear) > 1e-12 * norm(e.history.shear) + 1e-30 ||
+        norm(it->second.roll - e.history.roll) > 1e-12 * norm(e.history.roll) + 1e-30)
+      ++unequal;
+  }
+  std::size_t held_walls = 0;
+  for (const ContactHistory& h : held.wall_history) held_walls += !is_zero(h);
+  std::printf("laid film: %zu free particles of %zu; contacts in the source %zu (%zu with a glued sphere), carried %zu, "
+              "held by the new engine %zu (%zu unequal to the source's turned back); history norms %.6g vs %.6g; "
+              "wall histories %zu expected, %zu held\n",
+              film.settled.size(), static_cast<std::size_t>(source.free_particles()), expected, with_glued,
+              film.settled_contacts.size(), held_pairs, unequal, norm_src, norm_held, wall_expected, held_walls);
+  ASSERT_GT(expected, 100u);
+  EXPECT_GT(with_glued, 50u);
+  EXPECT_EQ(film.settled_contacts.size(), expected);
+  EXPECT_EQ(held_pairs, expected);
+  EXPECT_EQ(unequal, 0u);
+  EXPECT_NEAR(norm_held, norm_src, 1e-12 * norm_src);
+  EXPECT_EQ(film.settled_wall_contacts.size(), wall_expected);
+  EXPECT_EQ(held_walls, wall_expected);
+
+  // Goes on as the drum does: the source and the laid film (with and without histories)
+  // over 100 more steps, positions compared by source id in the laid frame.
+  InitialFilmSpec bare = film;
+  bare.settled_contacts.clear();
+  bare.settled_wall_contacts.clear();
+  CentrecScene unloaded(film_config(cfg, bare));
+  // The set-up force pass against the source's last one (turned back): the same springs,
+  // but for the one increment the set-up adds without storing it (Simulation::setup).
+  auto setup_force_change = [&](const Simulation& sim) {
+    std::map<std::int64_t, std::size_t> index_in_state;
+    for (std::size_t j = 0; j < state.id.size(); ++j) index_in_state[state.id[j]] = j;
+    double change = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < sim.size(); ++i) {
+      if (sim.motions()[i] != Motion::free) continue;
+      const std::size_t j = index_in_state.at(film.settled[static_cast<std::size_t>(sim.ids()[i] - glued)].source_id);
+      const Vec3 f_src = rotate(state.f[j], {0, 0, 1}, c, -s);
+      change += norm(sim.forces()[i] - f_src);
+      total += norm(f_src);
+    }
+    return change / total;
+  };
+  const double change_laid = setup_force_change(laid.simulation()), change_bare = setup_force_change(unloaded.simulation());
+  const int steps = 100;
+  source.simulation().step(steps);
+  laid.simulation().step(steps);
+  unloaded.simulation().step(steps);
+  const auto xs = free_positions(source.simulation()), xl = free_positions(laid.simulation()),
+             xu = free_positions(unloaded.simulation());
+  double dev_laid = 0.0, dev_bare = 0.0;
+  for (std::size_t k = 0; k < film.settled.size(); ++k) {
+    const std::int64_t id_new = glued + static_cast<std::int64_t>(k);
+    const auto s_it = xs.find(film.settled[k].source_id);
+    if (s_it == xs.end() || !xl.count(id_new) || !xu.count(id_new)) continue;
+    const Vec3 back = rotate(s_it->second, {0, 0, 1}, c, -s);
+    dev_laid = std::max(dev_laid, norm(xl.at(id_new) - back));
+    dev_bare = std::max(dev_bare, norm(xu.at(id_new) - back));
+  }
+  const double d = cfg.particle.diameter;
+  std::printf("set-up forces against the source's last (sum |df| / sum |f|): with the histories %.4f, without %.4f; "
+              "after %d steps, largest distance from the drum's own run: with %.3g d, without %.3g d\n",
+              change_laid, change_bare, steps, dev_laid / d, dev_bare / d);
+  EXPECT_LT(change_laid, 0.05);
+  EXPECT_GT(change_bare, 0.3);
+  EXPECT_LT(dev_laid, 1e-3 * d);
+  EXPECT_GT(dev_bare, 20.0 * dev_laid);
 }
