@@ -60,14 +60,12 @@ std::vector<InitialFilmSpec::Particle> keep_lower_fraction(std::vector<InitialFi
   return kept;
 }
 
-// The index of each glued sphere of `state` in the target's lattice (rough_wall_centres at
-// angle 0), by position once turned back; -1 where the target has none there.
+// The index of each glued sphere of `state` among the target's lattice `sites`
+// (rough_wall_centres at angle 0), by position once turned back; absent where the target
+// has none there.
 std::unordered_map<std::int64_t, std::int64_t> glued_in_target(const SimulationState& state, const SceneConfig& target,
-                                                              double c, double s) {
+                                                              const std::vector<Vec3>& sites, double c, double s) {
   std::unordered_map<std::int64_t, std::int64_t> out;
-  if (!target.rough_wall.enabled) return out;
-  const std::vector<Vec3> sites =
-      rough_wall_centres(target.rough_wall, 0.5 * target.drum.diameter, 0.0, target.drum.length, false);
   const double cell = target.rough_wall.sphere_diameter, tol = 1e-6 * cell;
   auto key = [cell](Vec3 x) {
     return std::array<long, 3>{std::lround(x.x / cell), std::lround(x.y / cell), std::lround(x.z / cell)};
@@ -106,12 +104,12 @@ void carry_contacts(const SceneConfig& source, const SimulationState& state, con
   auto turned_back = [&](const ContactHistory& h) {
     return ContactHistory{rotate(h.shear, axis, c, -s), rotate(h.roll, axis, c, -s)};
   };
-  std::unordered_map<std::int64_t, std::int64_t> number = glued_in_target(state, target, c, s);
-  const std::int64_t glued = target.rough_wall.enabled
-                                 ? static_cast<std::int64_t>(rough_wall_centres(target.rough_wall, 0.5 * target.drum.diameter,
-                                                                                0.0, target.drum.length, false)
-                                                                 .size())
-                                 : 0;
+  const std::vector<Vec3> sites =
+      target.rough_wall.enabled
+          ? rough_wall_centres(target.rough_wall, 0.5 * target.drum.diameter, 0.0, target.drum.length, false)
+          : std::vector<Vec3>{};
+  std::unordered_map<std::int64_t, std::int64_t> number = glued_in_target(state, target, sites, c, s);
+  const std::int64_t glued = static_cast<std::int64_t>(sites.size());
   for (std::size_t k = 0; k < film.settled.size(); ++k)
     number[film.settled[k].source_id] = glued + static_cast<std::int64_t>(k);
   for (const PairHistoryEntry& e : state.pair_history) {
