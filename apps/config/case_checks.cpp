@@ -7,6 +7,7 @@
 
 #include "dem/material.hpp"
 #include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/packed_film.hpp"
 #include "dem/sphere_mass.hpp"
 
 namespace centrec::config {
@@ -108,6 +109,23 @@ std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived) {
     if (!(f.radial_offset > 0.0 && f.radial_offset < R))
       return CaseProblem{"dem.feeder.radial_offset_d", "the feeder centre " + g(f.radial_offset) +
                                                            " m inside the wall lies outside the drum radius " + g(R) + " m"};
+    // The region's particles touch rc +- radial_height / 2 (dem/scene/feeder.cpp): inside the
+    // wall's inner surface (the rough wall's spheres included), short of the axis, and an arc
+    // that does not wrap onto itself.
+    const double rc = R - f.radial_offset, inner = R - (s.rough_wall.enabled ? s.rough_wall.sphere_diameter : 0.0);
+    if (rc + 0.5 * f.radial_height > inner)
+      return CaseProblem{"dem.feeder.radial_height_d",
+                         "the feeder region reaches " + g(rc + 0.5 * f.radial_height) +
+                             " m from the axis, into the wall (its inside, rough wall included, is at " + g(inner) +
+                             " m): lower radial_height_d or raise radial_offset_d"};
+    if (rc - 0.5 * f.radial_height < 0.0)
+      return CaseProblem{"dem.feeder.radial_height_d", "the feeder region (" + g(f.radial_height) +
+                                                           " m high about " + g(rc) +
+                                                           " m from the axis) crosses the drum's axis"};
+    if (f.arc_width > 2.0 * M_PI * rc)
+      return CaseProblem{"dem.feeder.arc_width_d", "the arc " + g(f.arc_width) +
+                                                       " m is longer than the circumference at the feeder's radius (" +
+                                                       g(2.0 * M_PI * rc) + " m)"};
     if (f.axial_start + f.axial_length > L)
       return CaseProblem{"dem.feeder.axial_length_d", "the feeder region (axial_start + axial_length = " +
                                                           g(f.axial_start + f.axial_length) +
@@ -131,13 +149,25 @@ std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived) {
                              g(f.interval) + " s); enlarge the region or lower the flow"};
   }
   if (s.initial_film.particles > 0) {
-    const double rmax = 0.5 * d * (1.0 + 3.0 * s.particle.relative_spread);
-    const double span = s.slice.enabled ? s.slice.length : L;
-    const double fits = 0.74 * M_PI * R * R * span / ((4.0 / 3.0) * M_PI * rmax * rmax * rmax);
-    if (static_cast<double>(s.initial_film.particles) > fits)
+    const dem::scene::LooseFilmRegion film = dem::scene::loose_film_region(s);
+    if (film.periodic && (s.initial_film.axial_from > 0.0 || s.initial_film.axial_to > 0.0))
+      return CaseProblem{s.initial_film.axial_from > 0.0 ? "dem.initial_film.axial_from" : "dem.initial_film.axial_to",
+                         "a slice's film fills its whole period; axial_from and axial_to place a drum's film"};
+    if (!film.periodic && !(film.z0 < L))
+      return CaseProblem{"dem.initial_film.axial_from",
+                         "the film starts at " + g(film.z0) + " m, past the drum's end (" + g(L) + " m)"};
+    if (!film.periodic && !(film.z1 <= L))
+      return CaseProblem{"dem.initial_film.axial_to",
+                         "the film ends at " + g(film.z1) + " m, past the drum's end (" + g(L) + " m)"};
+    if (!film.periodic && !(film.z0 < film.z1))
+      return CaseProblem{"dem.initial_film.axial_to", "the film's end " + g(film.z1) + " m is not past its start " +
+                                                          g(film.z0) + " m (dem.initial_film.axial_from)"};
+    const std::size_t count = static_cast<std::size_t>(s.initial_film.particles);
+    const std::size_t fits = dem::scene::loose_film_capacity(s, count);
+    if (count > fits)
       return CaseProblem{"dem.initial_film.particles",
-                         std::to_string(s.initial_film.particles) + " particles do not fit in the drum (at most " +
-                             g(fits) + " at the densest packing)"};
+                         std::to_string(count) + " particles do not fit in the drum (its starting lattice holds at most " +
+                             std::to_string(fits) + " between z = " + g(film.z0) + " and " + g(film.z1) + " m)"};
   }
   const auto& sp = dc.sampling.sampler;
   const double bins = static_cast<double>(sp.axial_sections) * sp.tangential_bins * sp.bins;

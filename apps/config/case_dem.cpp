@@ -155,7 +155,8 @@ DemCase read_dem_case(MapReader root) {
                                              "largest holdup change per window, as a fraction of the holdup");
   slice.finish();
 
-  s.gravity = root.number("gravity", 9.81, Range::non_negative(), "m/s^2", "gravitational acceleration");
+  s.gravity = root.number("gravity", 9.81, Range::positive(), "m/s^2",
+                          "gravitational acceleration (> 0: its part across the axis sets the film's top)");
   s.seed = static_cast<std::uint64_t>(
       root.integer("seed", 12345, 0, shared_ranges::kSeedMax, "random seed of the feeder and the initial film"));
 

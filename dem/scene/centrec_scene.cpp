@@ -120,7 +120,6 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
   const double R = drum_radius();
   const bool periodic = cfg_.slice.enabled;
   const double zmax = periodic ? cfg_.slice.length : cfg_.drum.length;
-  double inset = 0.0;
   if (cfg_.rough_wall.enabled) {
     for (const Vec3& c : rough_wall_centres(cfg_.rough_wall, R, 0.0, zmax, periodic)) {
       // Glued: turning rigidly with the drum.
@@ -128,7 +127,6 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
                           {0, 0, cfg_.drum.omega}, Motion::drum});
       ++glued_;
     }
-    inset = cfg_.rough_wall.sphere_diameter;
   }
 
   if (!cfg_.initial_film.settled.empty()) {
@@ -143,12 +141,9 @@ CentrecScene::CentrecScene(const SceneConfig& config) : cfg_(config) {
     }
     sim_->preset_contact_histories(film.settled_contacts, film.settled_wall_contacts);
   } else if (cfg_.initial_film.particles > 0) {
-    SizeSampler sizes(cfg_.particle, cfg_.seed + 1);
-    std::vector<double> radii(static_cast<std::size_t>(cfg_.initial_film.particles));
-    for (double& r : radii) r = 0.5 * sizes.next_diameter();
-    const double z0 = periodic ? 0.0 : cfg_.initial_film.axial_from;
-    const double z1 = periodic ? zmax : (cfg_.initial_film.axial_to > 0.0 ? cfg_.initial_film.axial_to : zmax);
-    for (const FilmSite& s : packed_film_sites(radii, R, inset, z0, z1, periodic)) {
+    const std::vector<double> radii = loose_film_radii(cfg_);
+    const LooseFilmRegion g = loose_film_region(cfg_);
+    for (const FilmSite& s : packed_film_sites(radii, g.R, g.inset, g.z0, g.z1, g.periodic)) {
       // Rigid co-rotation.
       sim_->add_particle({p, s.radius, s.x, cross(Vec3{0, 0, cfg_.drum.omega}, s.x), {0, 0, cfg_.drum.omega}});
     }

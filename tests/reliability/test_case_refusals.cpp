@@ -13,6 +13,8 @@
 
 #include "config/case_checks.hpp"
 #include "config/case_file.hpp"
+#include "dem/scene/centrec_scene.hpp"
+#include "dem/scene/packed_film.hpp"
 #include "dem/scene/scene_config.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/h5_file.hpp"
@@ -124,6 +126,67 @@ TEST(CaseRefusals, ValidateMakesTheChecksTheRunMakes) {
   // A feed the feeder region cannot insert.
   EXPECT_HAS(error_of(with(kDem, "mass_flow: 8.925e-3", "mass_flow: 1e300")), "dem.feeder.mass_flow: the feed 1e+300 kg/s exceeds what the feeder region can insert");
   EXPECT_HAS(error_of(std::string(kDem) + "  initial_film: {particles: 100000000}\n"), "do not fit in the drum");
+}
+
+// What the scene cannot build is refused by the reader with the key named (each was accepted
+// by `validate`, then failed in the run without naming it, or ran as nonsense).
+TEST(CaseRefusals, ValidateRefusesWhatTheSceneCannotBuild) {
+  EXPECT_HAS(error_of(std::string(kDem) + "  gravity: 0\n"), "dem.gravity = 0 is out of the allowed range");
+  // The feeder region inside the wall (rough wall included), short of the axis, its arc
+  // shorter than the circumference (the drum's radius is 12.5 d, the feeder's centre 2.5 d
+  // from the axis).
+  EXPECT_HAS(error_of(with(kDem, "radial_offset_d: 10", "radial_offset_d: 10, radial_height_d: 6")),
+             "dem.feeder.radial_height_d: the feeder region (0.0072 m high about 0.003 m from the axis) crosses");
+  EXPECT_HAS(error_of(with(kDem, "radial_offset_d: 10", "radial_offset_d: 2, radial_height_d: 4.5")),
+             "dem.feeder.radial_height_d: the feeder region reaches");
+  EXPECT_EQ(error_of(with(kDem, "radial_offset_d: 10", "radial_offset_d: 2, radial_height_d: 2")), "");
+  EXPECT_HAS(error_of(with(kDem, "radial_offset_d: 10", "radial_offset_d: 10, arc_width_d: 16")),
+             "dem.feeder.arc_width_d: the arc 0.0192 m is longer than the circumference");
+  EXPECT_EQ(error_of(with(kDem, "radial_offset_d: 10", "radial_offset_d: 10, arc_width_d: 15")), "");
+  // The loose film inside the drum's length.
+  EXPECT_HAS(error_of(std::string(kDem) + "  initial_film: {particles: 100, axial_from: 0.05}\n"),
+             "dem.initial_film.axial_from: the film starts at 0.05 m, past the drum's end");
+  EXPECT_HAS(error_of(std::string(kDem) + "  initial_film: {particles: 100, axial_to: 0.05}\n"),
+             "dem.initial_film.axial_to: the film ends at 0.05 m, past the drum's end");
+  EXPECT_HAS(error_of(std::string(kDem) + "  initial_film: {particles: 100, axial_from: 0.02, axial_to: 0.01}\n"),
+             "dem.initial_film.axial_to: the film's end 0.01 m is not past its start");
+  EXPECT_HAS(error_of(with(kDem, "sampling:", "slice: {enabled: true, length_d: 9}\n  sampling:") +
+                      "  initial_film: {particles: 100, axial_from: 0.01}\n"),
+             "dem.initial_film.axial_from: a slice's film fills its whole period");
+}
+
+// The loose film's count is refused exactly where the scene's lattice runs out (the bound
+// was the densest packing of the whole drum, 2.6x the lattice's count here, so `validate`
+// passed films the run refused).
+TEST(CaseRefusals, TheLooseFilmIsRefusedWhereTheSceneRunsOutOfSites) {
+  const std::string dir = temp_dir("film_fits");
+  const config::CaseFile cf = config::read_case_file(write_case(dir, kDem));
+  dem::scene::SceneConfig scene = cf.dem->scene;
+  const std::size_t fits = dem::scene::loose_film_capacity(scene, 1000000);
+  std::printf("the drum's starting lattice holds %zu particles\n", fits);
+  ASSERT_GT(fits, 1000u);
+  auto film = [&](std::size_t n) { return std::string(kDem) + "  initial_film: {particles: " + std::to_string(n) + "}\n"; };
+  EXPECT_EQ(error_of(film(fits)), "");
+  EXPECT_HAS(error_of(film(fits + 1)), "dem.initial_film.particles: " + std::to_string(fits + 1) +
+                                            " particles do not fit in the drum (its starting lattice holds at most " +
+                                            std::to_string(fits));
+  scene.initial_film.particles = static_cast<std::int64_t>(fits);
+  EXPECT_NO_THROW(dem::scene::CentrecScene{scene});
+  scene.initial_film.particles = static_cast<std::int64_t>(fits + 1);
+  EXPECT_THROW(dem::scene::CentrecScene{scene}, std::invalid_argument);
+  // A size distribution: the largest sphere drawn sets the pitch, as in the scene, so the
+  // count that first overflows depends on the draw; it is found and both sides built.
+  scene.particle.distribution = dem::scene::SizeDistribution::uniform;
+  scene.particle.relative_spread = 0.1;
+  std::size_t n = dem::scene::loose_film_capacity(scene, 0);
+  for (;; ++n) {
+    scene.initial_film.particles = static_cast<std::int64_t>(n + 1);
+    if (dem::scene::loose_film_capacity(scene, n + 1) < n + 1) break;
+  }
+  std::printf("uniform +-10 %%: the lattice holds %zu of this draw\n", n);
+  EXPECT_THROW(dem::scene::CentrecScene{scene}, std::invalid_argument);
+  scene.initial_film.particles = static_cast<std::int64_t>(n);
+  EXPECT_NO_THROW(dem::scene::CentrecScene{scene});
 }
 
 TEST(CaseRefusals, TheTimeStepAdviceMatchesTheEngines) {
