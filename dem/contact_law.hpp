@@ -61,7 +61,8 @@ inline ContactResult evaluate_contact(const PairConstants& c, const ContactInput
   out.sliding = t.sliding;
   RollingOut<Vec3> roll{Vec3{}, Vec3{}};
   if (c.mu_r > 0.0)
-    roll = rolling_torque(c.rolling, k.kt, k.kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n, in.w_rel, old.roll, dt);
+    roll = rolling_torque(c.rolling, rolling_input(k.kt, k.kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n, in.w_rel,
+                                                   old.roll, c.rolling_coefficients.data(), dt));
   out.history.roll = roll.history;
   out.force = out.fn * in.n + t.force;
   // Tangential force acts at the contact point: -arm_i n on i, +arm_j n on j.

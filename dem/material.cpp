@@ -13,6 +13,7 @@ PairConstants make_pair_constants(const Material& a, const Material& b, const Pa
   c.mu = p.friction;
   c.mu_r = p.rolling_friction;
   c.rolling = p.rolling_model;
+  c.rolling_coefficients = p.rolling_coefficients;
   const double damp = -2.0 * std::sqrt(5.0 / 6.0) * c.beta;
   c.damp_n = damp * std::sqrt(2.0 * c.E_eff);
   c.damp_t = damp * std::sqrt(8.0 * c.G_eff);

@@ -42,7 +42,9 @@ using centrec::dem::greater;
 using centrec::dem::select;
 using centrec::dem::sqrt_of;
 using centrec::dem::zero_like;
-inline V4 select(d4 mask, V4 a, V4 b) { return {select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z)}; }
+inline V4 select(d4 mask, V4 a, V4 b) {
+  return {select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z)};
+}
 inline V4 zero_like(V4) { return {_mm256_setzero_pd(), _mm256_setzero_pd(), _mm256_setzero_pd()}; }
 
 inline d4 lanes(double a0, double a1, double a2, double a3) { return _mm256_set_pd(a3, a2, a1, a0); }
@@ -58,9 +60,10 @@ struct ContactLanes {
 };
 struct ConstantLanes {
   d4 E_eff, G_eff, mu, mu_r, damp_n, damp_t;
+  d4 rolling_coefficients[kRollingCoefficientSlots];
   RollingModel model;  // every lane's rolling model, unless models_differ
   bool models_differ;
-  d4 is_cdt;  // where models_differ: all ones in the lanes of RollingModel::cdt
+  d4 model_lanes;  // where models_differ: each lane's RollingModel as a number
 };
 struct HistoryLanes {
   V4 shear, roll;
@@ -74,21 +77,41 @@ struct ResultLanes {  // ContactResult; sliding: all ones where the Coulomb cap 
 // The constants of four contacts' material pairs, lane k from pk.
 inline ConstantLanes constant_lanes(const PairConstants* p0, const PairConstants* p1, const PairConstants* p2,
                                     const PairConstants* p3) {
+  ConstantLanes c;
   if (p0 == p1 && p0 == p2 && p0 == p3) {  // one material pair (the common case)
     const PairConstants& k = *p0;
-    return {_mm256_set1_pd(k.E_eff), _mm256_set1_pd(k.G_eff), _mm256_set1_pd(k.mu),
-            _mm256_set1_pd(k.mu_r),  _mm256_set1_pd(k.damp_n), _mm256_set1_pd(k.damp_t),
-            k.rolling,               false,                    _mm256_setzero_pd()};
+    c = {_mm256_set1_pd(k.E_eff),
+         _mm256_set1_pd(k.G_eff),
+         _mm256_set1_pd(k.mu),
+         _mm256_set1_pd(k.mu_r),
+         _mm256_set1_pd(k.damp_n),
+         _mm256_set1_pd(k.damp_t),
+         {},
+         k.rolling,
+         false,
+         _mm256_setzero_pd()};
+    for (std::size_t s = 0; s < kRollingCoefficientSlots; ++s)
+      c.rolling_coefficients[s] = _mm256_set1_pd(k.rolling_coefficients[s]);
+    return c;
   }
   const auto field = [&](double PairConstants::*f) { return lanes(p0->*f, p1->*f, p2->*f, p3->*f); };
-  const auto cdt = [](const PairConstants* k) { return k->rolling == RollingModel::cdt ? -1.0 : 0.0; };
+  const auto model = [](const PairConstants* k) { return static_cast<double>(k->rolling); };
   const RollingModel m = p0->rolling;
   const bool differ = p1->rolling != m || p2->rolling != m || p3->rolling != m;
-  return {field(&PairConstants::E_eff), field(&PairConstants::G_eff), field(&PairConstants::mu),
-          field(&PairConstants::mu_r),  field(&PairConstants::damp_n), field(&PairConstants::damp_t),
-          m,                            differ,
-          // -1.0 in the lanes of cdt: blendv (select) reads only the sign bit
-          lanes(cdt(p0), cdt(p1), cdt(p2), cdt(p3))};
+  c = {field(&PairConstants::E_eff),
+       field(&PairConstants::G_eff),
+       field(&PairConstants::mu),
+       field(&PairConstants::mu_r),
+       field(&PairConstants::damp_n),
+       field(&PairConstants::damp_t),
+       {},
+       m,
+       differ,
+       lanes(model(p0), model(p1), model(p2), model(p3))};
+  for (std::size_t s = 0; s < kRollingCoefficientSlots; ++s)
+    c.rolling_coefficients[s] = lanes(p0->rolling_coefficients[s], p1->rolling_coefficients[s],
+                                      p2->rolling_coefficients[s], p3->rolling_coefficients[s]);
+  return c;
 }
 
 // pair_contact_input per lane.
@@ -102,9 +125,9 @@ inline ContactLanes pair_contact_inputs(V4 sd, d4 dist, d4 delta, d4 ra, d4 rc, 
 
 // evaluate_contact per lane (hertz_mindlin_coefficients, hertz_normal_force,
 // mindlin_tangential inlined in their order; the rolling model's own text).
-// Speed: the law written once, made for each rolling model (and for lanes of both) so the
-// lanes of a batch of one model run that model's straight-line code.
-constexpr int kBothModels = -1;  // Model: a RollingModel's value, or lanes of both
+// Speed: the law written once, made for each rolling model (and for lanes of several) so
+// the lanes of a batch of one model run that model's straight-line code.
+constexpr int kMixedModels = -1;  // Model: a RollingModel's value, or lanes of several
 
 template <int Model>
 inline ResultLanes evaluate_contacts_as(const ConstantLanes& c, const ContactLanes& in, const HistoryLanes& old,
@@ -129,17 +152,19 @@ inline ResultLanes evaluate_contacts_as(const ConstantLanes& c, const ContactLan
   out.history.shear = select(out.sliding, (-1.0 / kt) * ft_slide, shear);
   // Rolling (dem/rolling_models.hpp, the scalar law's text): each lane's model, and zero
   // where mu_r <= 0. Lanes of one model (the common case) run that model only; lanes of
-  // two run both, each keeping its own.
+  // several run every model of the table, each lane keeping its own model's result.
+  const auto roll_in = rolling_input(kt, kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n, in.w_rel, old.roll,
+                                     &c.rolling_coefficients[0], dt);
   RollingOut<V4> roll;
-  if constexpr (Model == kBothModels) {
-    const RollingOut<V4> a = rolling_torque(RollingModel::epsd2, kt, kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n,
-                                            in.w_rel, old.roll, dt);
-    const RollingOut<V4> b = rolling_torque(RollingModel::cdt, kt, kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n,
-                                            in.w_rel, old.roll, dt);
-    roll = {select(c.is_cdt, b.torque, a.torque), select(c.is_cdt, b.history, a.history)};
+  if constexpr (Model == kMixedModels) {
+    roll = {zero_like(in.n), zero_like(in.n)};
+    for_each_rolling_model([&](auto model) {
+      const RollingOut<V4> r = RollingKernel<decltype(model)::value>::torque(roll_in);
+      const d4 mine = _mm256_cmp_pd(c.model_lanes, _mm256_set1_pd(static_cast<double>(model.value)), _CMP_EQ_OQ);
+      roll = {select(mine, r.torque, roll.torque), select(mine, r.history, roll.history)};
+    });
   } else {
-    roll = rolling_torque(static_cast<RollingModel>(Model), kt, kn, in.delta, in.r_eff, c.mu_r, out.fn, in.n, in.w_rel,
-                          old.roll, dt);
+    roll = RollingKernel<static_cast<RollingModel>(Model)>::torque(roll_in);
   }
   const d4 zero = _mm256_setzero_pd();
   const d4 rolls = greater(c.mu_r, zero);
@@ -154,14 +179,10 @@ inline ResultLanes evaluate_contacts_as(const ConstantLanes& c, const ContactLan
 
 inline ResultLanes evaluate_contacts(const ConstantLanes& c, const ContactLanes& in, const HistoryLanes& old,
                                      double dt) {
-  if (c.models_differ) return evaluate_contacts_as<kBothModels>(c, in, old, dt);
-  switch (c.model) {
-    case RollingModel::cdt:
-      return evaluate_contacts_as<static_cast<int>(RollingModel::cdt)>(c, in, old, dt);
-    case RollingModel::epsd2:
-      break;
-  }
-  return evaluate_contacts_as<static_cast<int>(RollingModel::epsd2)>(c, in, old, dt);
+  if (c.models_differ) return evaluate_contacts_as<kMixedModels>(c, in, old, dt);
+  return with_rolling_model(c.model, [&](auto model) {
+    return evaluate_contacts_as<static_cast<int>(decltype(model)::value)>(c, in, old, dt);
+  });
 }
 
 // One particle pair in contact, as the pair row found it: a and c in canonical operand

@@ -88,19 +88,23 @@ void Simulation::set_interaction(MaterialId ma, MaterialId mb, const PairInterac
   const int a = ma.index, b = mb.index;
   if (a < 0 || b < 0 || static_cast<std::size_t>(a) >= n_mat_ || static_cast<std::size_t>(b) >= n_mat_)
     throw std::invalid_argument("set_interaction: unknown material index");
-  for_each_pair_field(
-      [&](const char* name, auto m, double lo, double hi, bool lo_open) {
-        const double v = p.*m;
-        if (lo_open ? (v > lo && v <= hi) : (v >= lo && v <= hi)) return;
-        throw std::invalid_argument(std::string(name) + " = " + std::to_string(v) + " must lie in " +
-                                    (lo_open ? "(" : "[") + std::to_string(lo) + ", " +
-                                    (hi < 1e300 ? std::to_string(hi) + "]" : std::string("inf)")));
-      },
-      [&](const char* name, auto m) {
-        bool known = false;
-        for (const RollingModelInfo& i : kRollingModels) known = known || i.model == p.*m;
-        if (!known) throw std::invalid_argument(std::string(name) + ": not a rolling model of dem/rolling_models.hpp");
-      });
+  const auto check = [](const std::string& name, double v, double lo, double hi, bool lo_open) {
+    if (lo_open ? (v > lo && v <= hi) : (v >= lo && v <= hi)) return;
+    throw std::invalid_argument(name + " = " + std::to_string(v) + " must lie in " + (lo_open ? "(" : "[") +
+                                std::to_string(lo) + ", " +
+                                (hi < kInfinity ? std::to_string(hi) + "]" : std::string("inf)")));
+  };
+  for_each_pair_field([&](const char* name, auto m, double lo, double hi, bool lo_open,
+                          const char*) { check(name, p.*m, lo, hi, lo_open); },
+                      [&](const char* name, auto m, auto c) {
+                        if (!is_rolling_model(p.*m))
+                          throw std::invalid_argument(std::string(name) +
+                                                      ": not a rolling model of dem/rolling_models.hpp");
+                        const std::string model = rolling_model_info(p.*m).name;
+                        for_each_rolling_coefficient(p.*m, [&](std::size_t k, const RollingCoefficient& r) {
+                          check(model + " " + r.key, (p.*c)[k], r.lowest, r.highest, r.lowest_open);
+                        });
+                      });
   interactions_[static_cast<std::size_t>(a) * n_mat_ + b] = p;
   interactions_[static_cast<std::size_t>(b) * n_mat_ + a] = p;
   interaction_set_[static_cast<std::size_t>(a) * n_mat_ + b] = 1;

@@ -15,7 +15,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli/dem_engine_options.hpp"
 #include "config/case_checks.hpp"
 #include "config/case_file.hpp"
 #include "dem/scene/centrec_scene.hpp"
@@ -162,12 +161,13 @@ int main(int argc, char** argv) {
   try {
     const io::RunCheckpoint ck = io::read_checkpoint(from);
     const config::CaseFile cf = runs::drum_case_of(ck);
-    config::DemCase dc = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, {});
-    if (dc.scene.slice.enabled || !dc.scene.feeder.enabled)
-      throw std::invalid_argument(from + ": not a fed drum (this benchmark times the feeder and the outlet too)");
     // Both engines run the wall rolling LIGGGHTS' mesh walls can express (docs/dem_physics.md).
     const bool peers = !no_liggghts && liggghts::liggghts_available("mpirun", "liggghts");
-    if (peers) cli::apply_wall_rolling_model(dc, "liggghts");
+    config::Overrides o;
+    if (peers) o.wall_rolling = dem::WallRolling::liggghts;
+    const config::DemCase dc = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, o);
+    if (dc.scene.slice.enabled || !dc.scene.feeder.enabled)
+      throw std::invalid_argument(from + ": not a fed drum (this benchmark times the feeder and the outlet too)");
     config::DemCase centrec_dc = dc;
     if (skin_d > 0.0) centrec_dc.scene.skin = skin_d * dc.scene.particle.diameter;
     io::ensure_directory(out);

@@ -80,8 +80,8 @@ CentrecFilmRun::CentrecFilmRun(const FilmCase& c, const FilmState& s, const Cent
     // deck's atom types 1 and 2.
     const dem::MaterialId grain = sim.add_material({c.youngs_modulus, c.poisson_ratio, c.density});
     const dem::MaterialId wall_mat = sim.add_material({c.youngs_modulus, c.poisson_ratio, c.density});
-    sim.set_interaction(grain, grain, {c.restitution, c.friction, c.rolling_friction});
-    sim.set_interaction(grain, wall_mat, {c.restitution, c.wall_friction, c.wall_rolling_friction});
+    sim.set_interaction(grain, grain, c.pair_interaction());
+    sim.set_interaction(grain, wall_mat, c.wall_interaction());
     sim.add_wall(dem::Wall::cylinder({0, 0, 0}, {0, 0, 1}, c.drum_radius, -INFINITY, INFINITY, c.omega(), wall_mat));
     for (const auto& p : s.particles) {
       sim.add_particle({grain, 0.5 * s.diameter, {p.x[0], p.x[1], p.x[2]}, {p.v[0], p.v[1], p.v[2]},

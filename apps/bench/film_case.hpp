@@ -4,6 +4,8 @@
 // the drum axis. One struct so both engines are fed from the same numbers.
 #include <cmath>
 
+#include "dem/material.hpp"
+
 namespace centrec::bench {
 
 struct FilmCase {
@@ -24,10 +26,19 @@ struct FilmCase {
   double rolling_friction = 0.26;                       // particle-particle
   double wall_friction = 10000.0;                       // paper: the first layer sticks
   double wall_rolling_friction = 0.26;
+  // Rolling model of both contacts and its own coefficients (dem/rolling_models.hpp).
+  dem::RollingModel rolling_model = dem::RollingModel::epsd2;
+  dem::RollingCoefficients rolling_coefficients{};
   double dt = 1e-5;                                     // s
   // Film: packed layers (about 4.5 d thick); N is set by the number of axial rows.
   int layers = 5;
 
+  dem::PairInteraction pair_interaction() const {
+    return {restitution, friction, rolling_friction, rolling_model, rolling_coefficients};
+  }
+  dem::PairInteraction wall_interaction() const {
+    return {restitution, wall_friction, wall_rolling_friction, rolling_model, rolling_coefficients};
+  }
   double omega() const { return rpm * 2.0 * M_PI / 60.0; }  // rad/s
   double radius() const { return 0.5 * diameter; }
   double gravity_y() const { return -gravity * std::cos(tilt_deg * M_PI / 180.0); }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "bench/deck_state_report.hpp"
 #include "dem/material.hpp"
@@ -32,7 +34,7 @@ double lammps_law_alpha(const dem::PairConstants& k) { return std::sqrt(5.0) * s
 // r_eff) takes LAMMPS' a = sqrt(r_eff delta) back to LIGGGHTS' sqrt(R* delta) wherever a
 // coefficient multiplies a.
 LammpsLaw::Contact contact_law(const dem::PairConstants& k, double mu, double mu_r, double r_star, double r_eff,
-                               double overlap) {
+                               double overlap, const dem::PairInteraction& p) {
   LammpsLaw::Contact l;
   const double scale = std::sqrt(r_star / r_eff);
   l.tsuji = lammps_tsuji_parameter(lammps_law_alpha(k));
@@ -41,9 +43,21 @@ LammpsLaw::Contact contact_law(const dem::PairConstants& k, double mu, double mu
   // LAMMPS' tangential dashpot is xgammat times its normal one.
   l.xgammat = std::sqrt(4.0 * k.G_eff / k.E_eff);
   l.friction = mu;
-  // EPSD2 torque k_t R*^2 theta (k_t = 8 G* sqrt(R* delta)), capped at mu_r R* |Fn|; SDS
-  // torque k_roll r_eff^2 theta, capped at mu_roll r_eff |Fn|.
-  l.k_roll = 8.0 * k.G_eff * std::sqrt(r_star * overlap) * (r_star / r_eff) * (r_star / r_eff);
+  // LAMMPS' SDS torque k_roll r_eff^2 theta (+ gamma_roll r_eff^2 theta'), capped at
+  // mu_roll r_eff |Fn|. A model LAMMPS has (dem/rolling_models.hpp, RollingModelInfo::lammps:
+  // sds) takes its own coefficients, scaled from R* to r_eff; EPSD2 (torque k_t R*^2 theta,
+  // k_t = 8 G* sqrt(R* delta), capped at mu_r R* |Fn|) the SDS spring of its k_t at `overlap`.
+  const double to_r_eff = (r_star / r_eff) * (r_star / r_eff);
+  const dem::RollingModelInfo& model = dem::rolling_model_info(p.rolling_model);
+  if (model.lammps) {
+    l.k_roll = p.rolling_coefficients[0] * to_r_eff;
+    l.gamma_roll = p.rolling_coefficients[1] * to_r_eff;
+  } else if (p.rolling_model == dem::RollingModel::epsd2) {
+    l.k_roll = 8.0 * k.G_eff * std::sqrt(r_star * overlap) * to_r_eff;
+  } else {
+    throw std::invalid_argument(std::string("rolling_model: ") + model.name +
+                                " - LAMMPS has no such rolling model and no SDS form of it");
+  }
   l.rolling_friction = mu_r * r_star / r_eff;
   l.overlap = overlap;
   l.r_eff = r_eff;
@@ -69,14 +83,13 @@ double lammps_tsuji_parameter(double alpha) {
 
 LammpsLaw lammps_law(const FilmCase& c, double pair_overlap_d, double wall_overlap_d) {
   const dem::Material m{c.youngs_modulus, c.poisson_ratio, c.density};
-  const dem::PairConstants pp =
-      dem::make_pair_constants(m, m, {c.restitution, c.friction, c.rolling_friction});
-  const dem::PairConstants pw =
-      dem::make_pair_constants(m, m, {c.restitution, c.wall_friction, c.wall_rolling_friction});
+  const dem::PairConstants pp = dem::make_pair_constants(m, m, c.pair_interaction());
+  const dem::PairConstants pw = dem::make_pair_constants(m, m, c.wall_interaction());
   LammpsLaw law;
   law.tsuji_alpha = lammps_law_alpha(pp);
   const double r = c.radius();
-  law.pair = contact_law(pp, c.friction, c.rolling_friction, 0.5 * r, 0.5 * r, pair_overlap_d * c.diameter);
+  law.pair = contact_law(pp, c.friction, c.rolling_friction, 0.5 * r, 0.5 * r, pair_overlap_d * c.diameter,
+                         c.pair_interaction());
   law.pair.youngs_modulus = c.youngs_modulus;  // pair style granular mixes E* from E, nu as centrec does
   law.pair.poisson_ratio = c.poisson_ratio;
   // Drum wall: LIGGGHTS' (flat facets) and centrec's R* is r; LAMMPS' cylinder region (side
@@ -85,7 +98,8 @@ LammpsLaw lammps_law(const FilmCase& c, double pair_overlap_d, double wall_overl
   // given below. Both measured with this LAMMPS build (test LammpsDeck.ContactLawMatchesCentrec).
   const double R2 = 2.0 * c.drum_radius;
   const double wall_r_eff = r * R2 / (R2 - r);
-  law.wall = contact_law(pw, c.wall_friction, c.wall_rolling_friction, r, wall_r_eff, wall_overlap_d * c.diameter);
+  law.wall = contact_law(pw, c.wall_friction, c.wall_rolling_friction, r, wall_r_eff, wall_overlap_d * c.diameter,
+                         c.wall_interaction());
   law.wall.poisson_ratio = c.poisson_ratio;
   law.wall.youngs_modulus = 2.0 * (1.0 - c.poisson_ratio) * pw.E_eff * std::sqrt(r / wall_r_eff);
   return law;
@@ -95,13 +109,14 @@ std::string lammps_contact_commands(const FilmCase& c, const LammpsLaw& law) {
   std::string d;
   const LammpsLaw::Contact& p = law.pair;
   const LammpsLaw::Contact& w = law.wall;
-  // Hertz with the Tsuji dashpot, Mindlin with history and its dashpot, SDS rolling
-  // without dashpot (EPSD2 has none), no twisting (EPSD2 drops the torsion part).
+  // Hertz with the Tsuji dashpot, Mindlin with history and its dashpot, SDS rolling (EPSD2's
+  // without dashpot: it has none), no twisting (EPSD2 drops the torsion part).
   appendf(d,
           "pair_style granular\n"
           "pair_coeff * * hertz/material %.17g %.17g %.17g damping tsuji tangential mindlin %.17g %.17g %.17g "
-          "rolling sds %.17g 0 %.17g\n",
-          p.youngs_modulus, p.tsuji, p.poisson_ratio, p.kt, p.xgammat, p.friction, p.k_roll, p.rolling_friction);
+          "rolling sds %.17g %.17g %.17g\n",
+          p.youngs_modulus, p.tsuji, p.poisson_ratio, p.kt, p.xgammat, p.friction, p.k_roll, p.gamma_roll,
+          p.rolling_friction);
   // The drum: a cylinder region rotating about +z at omega; fix wall/gran/region takes the
   // wall velocity at the contact from the region's motion, and the rotation leaves the
   // cylinder in place. The wall rolling sees the particle's absolute spin, as LIGGGHTS'
@@ -110,9 +125,9 @@ std::string lammps_contact_commands(const FilmCase& c, const LammpsLaw& law) {
           "variable theta equal %.17g*step*dt\n"
           "region drum cylinder z 0 0 %.17g INF INF side in units box rotate v_theta 0 0 0 0 0 1\n"
           "fix wall all wall/gran/region granular hertz/material %.17g %.17g %.17g damping tsuji tangential mindlin "
-          "%.17g %.17g %.17g rolling sds %.17g 0 %.17g region drum\n",
+          "%.17g %.17g %.17g rolling sds %.17g %.17g %.17g region drum\n",
           c.omega(), c.drum_radius, w.youngs_modulus, w.tsuji, w.poisson_ratio, w.kt, w.xgammat, w.friction, w.k_roll,
-          w.rolling_friction);
+          w.gamma_roll, w.rolling_friction);
   return d;
 }
 

@@ -23,6 +23,7 @@ struct LammpsLaw {
     double xgammat = 0.0;          // tangential dashpot / normal dashpot
     double friction = 0.0;
     double k_roll = 0.0;           // rolling sds stiffness (constant)
+    double gamma_roll = 0.0;       // rolling sds dashpot
     double rolling_friction = 0.0; // rolling sds mu_roll
     double overlap = 0.0;          // m: the overlap at which k_roll equals EPSD2's k_t (R*/R_eff)^2
     double r_eff = 0.0;            // m: LAMMPS' effective radius of the contact

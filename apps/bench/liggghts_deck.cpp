@@ -57,8 +57,8 @@ void write_liggghts_deck(const std::string& path, const FilmCase& c, const FilmS
   liggghts::LiggghtsMaterials m;
   m.particle_youngs_modulus = m.wall_youngs_modulus = c.youngs_modulus;
   m.particle_poisson_ratio = m.wall_poisson_ratio = c.poisson_ratio;
-  m.particle_particle = {c.restitution, c.friction, c.rolling_friction};
-  m.particle_wall = {c.restitution, c.wall_friction, c.wall_rolling_friction};
+  m.particle_particle = c.pair_interaction();
+  m.particle_wall = c.wall_interaction();
   std::fputs(liggghts::liggghts_material_commands(m).c_str(), f);
   std::fprintf(f, "timestep %.9g\n", c.dt);
   // The wall: a still mesh whose surface moves as if rotating (no mesh motion, no

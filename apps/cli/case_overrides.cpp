@@ -1,6 +1,7 @@
 #include "cli/case_overrides.hpp"
 
-#include <sstream>
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "cli/command_line.hpp"
@@ -9,14 +10,18 @@
 namespace centrec::cli {
 
 namespace {
-// A value as flags_text writes it (ten significant digits).
-template <class T>
-std::string text(const T& v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
+// A value as flags_text and override_args write it: the shortest text (at least 6
+// significant digits) that reads back as v, so a child process gets the value itself.
+std::string text(double v) {
+  char b[40];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    if (std::strtod(b, nullptr) == v) break;
+  }
+  return b;
 }
+std::string text(long long v) { return std::to_string(v); }
+const char* text(dem::WallRolling w) { return w == dem::WallRolling::relative ? "relative" : "liggghts"; }
 
 struct Flag {
   OverrideFlag which;
@@ -34,7 +39,7 @@ const Flag kFlags[] = {
      [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
        return app.add_option_function<int>(n, [&o](const int& v) { o.threads = v; }, h)->check(integer_in(0, config::shared_ranges::kThreadsMax));
      },
-     [](const config::Overrides& o) { return o.threads ? text(*o.threads) : std::string(); }},
+     [](const config::Overrides& o) { return o.threads ? text(static_cast<long long>(*o.threads)) : std::string(); }},
     {OverrideFlag::duration, "--duration", "SECONDS", "seconds of spin-up instead of dem.run.duration",
      [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
        return app.add_option_function<double>(n, [&o](const double& v) { o.duration = v; }, h)
@@ -58,7 +63,20 @@ const Flag kFlags[] = {
        return app.add_option_function<long long>(n, [&o](const long long& v) { o.seed = static_cast<std::uint64_t>(v); }, h)
            ->check(integer_in(0, config::shared_ranges::kSeedMax));
      },
-     [](const config::Overrides& o) { return o.seed ? text(*o.seed) : std::string(); }},
+     [](const config::Overrides& o) { return o.seed ? text(static_cast<long long>(*o.seed)) : std::string(); }},
+    {OverrideFlag::wall_rolling_model, "--wall-rolling-model", "relative|liggghts",
+     "contacts.wall_rolling_model instead of the case's (liggghts: LIGGGHTS' form)",
+     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
+       return app
+           .add_option_function<std::string>(
+               n,
+               [&o](const std::string& v) {
+                 o.wall_rolling = v == "relative" ? dem::WallRolling::relative : dem::WallRolling::liggghts;
+               },
+               h)
+           ->check(CLI::IsMember({"relative", "liggghts"}));
+     },
+     [](const config::Overrides& o) { return o.wall_rolling ? std::string(text(*o.wall_rolling)) : std::string(); }},
 };
 }  // namespace
 
@@ -68,12 +86,24 @@ void add_override_flags(CommandLine& app, config::Overrides& o, std::initializer
       if (f.which == w) f.add(app, o, f.name, f.help)->option_text(f.value);
 }
 
-std::string flags_text(const config::Overrides& o) {
-  std::string s;
+Args override_args(const config::Overrides& o) {
+  Args a;
   for (const Flag& f : kFlags) {
     const std::string v = f.given(o);
-    if (!v.empty()) s += (s.empty() ? "" : " ") + std::string(f.name) + " " + v;
+    if (!v.empty()) a.insert(a.end(), {f.name, v});
   }
+  return a;
+}
+
+std::vector<std::string> override_flag_names() {
+  std::vector<std::string> names;
+  for (const Flag& f : kFlags) names.push_back(f.name);
+  return names;
+}
+
+std::string flags_text(const config::Overrides& o) {
+  std::string s;
+  for (const std::string& a : override_args(o)) s += (s.empty() ? "" : " ") + a;
   return s;
 }
 

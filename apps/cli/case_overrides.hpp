@@ -1,8 +1,11 @@
 #pragma once
 // Command-line values that replace a case's (--threads, --duration, --speed-rpm,
-// --mass-flow) pass the same checks as the case file's values (config/case_checks), before
-// any work; a refusal names the flags.
+// --mass-flow, --seed, --wall-rolling-model) pass the same checks as the case file's values
+// (config/case_checks), before any work; a refusal names the flags. A child process
+// (`centrec sweep`'s points, `centrec run --replicas`) is given them by override_args.
 #include <initializer_list>
+#include <string>
+#include <vector>
 
 #include "cli/command_line.hpp"
 #include "config/case_file.hpp"
@@ -11,10 +14,16 @@ namespace centrec::cli {
 
 // The flags that replace a case value, each declared once (name, help, range, the
 // config::Overrides member it sets) in case_overrides.cpp.
-enum class OverrideFlag { threads, duration, speed_rpm, mass_flow, seed };
+enum class OverrideFlag { threads, duration, speed_rpm, mass_flow, seed, wall_rolling_model };
 
 // Declares `which` on `app`, each setting its member of `o` when given.
 void add_override_flags(CommandLine& app, config::Overrides& o, std::initializer_list<OverrideFlag> which);
+
+// {"--threads", "2", "--duration", "0.1"}: the given overrides as arguments, each value
+// written so that it reads back as itself.
+Args override_args(const config::Overrides& o);
+// Every override flag's name ("--threads", ...): what a child's command line sets anew.
+std::vector<std::string> override_flag_names();
 
 // "--threads 2 --duration 0.1": the overrides as they were given.
 std::string flags_text(const config::Overrides& o);

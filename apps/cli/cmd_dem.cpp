@@ -26,7 +26,7 @@ namespace {
 struct DemOptions {
   std::string case_path, out_dir = "out/dem", resume_dir;
   bool no_plots = false, overwrite = false, out_given = false;
-  config::Overrides overrides;  // --threads, --duration
+  config::Overrides overrides;  // --threads, --duration, --wall-rolling-model
   DemEngineOptions engine;
 };
 
@@ -42,7 +42,8 @@ void print_dem_help(const CommandLine& app) {
       "and the paper's figures (apps/plot_dem.py): fig2_mass_flow.png (outlet flow vs time),\n"
       "fig3_film_thickness.png (thickness along z), fig6_velocity_profiles.png (the nine\n"
       "profiles) and solid_fraction.png (--no-plots: none).\n"
-      "--threads and --duration enter the resolved configuration in the outputs and the checkpoint.\n"
+      "--threads, --duration and --wall-rolling-model enter the resolved configuration in the outputs\n"
+      "and the checkpoint.\n"
       "--engine liggghts runs the same case on LIGGGHTS 3.8 (`mpirun -np N liggghts`, N = --ranks;\n"
       "--mpirun srun for a cluster launcher) in DIR/liggghts and reads its dumps into the same\n"
       "samplers and outputs; settings LIGGGHTS cannot express are refused (see export-liggghts).\n\n"
@@ -65,6 +66,7 @@ void declare(CommandLine& app, DemOptions& o) {
   app.add_flag("--no-plots", o.no_plots, "draw no figures");
   add_overwrite_flag(app, o.overwrite);
   add_engine_options(app, o.engine);
+  add_override_flags(app, o.overrides, {OverrideFlag::wall_rolling_model});
 }
 
 // Checks what `declare` read; throws UsageError.
@@ -104,10 +106,12 @@ int cmd_dem(const Args& args) {
   config::CaseFile cf = ck ? config::read_case_text(ck->resolved_yaml, ck->case_path) : config::read_case_file(opt.case_path);
   if (!cf.dem) throw std::invalid_argument(cf.path + " has no `dem:` section");
   if (ck && !opt.case_path.empty()) {
-    // The stored case holds the first run's --duration and --threads: compare with those.
+    // The stored case holds the first run's --duration, --threads and --wall-rolling-model:
+    // compare with those.
     config::Overrides stored;
     stored.duration = cf.dem->run.duration;
     stored.threads = cf.dem->scene.threads;
+    stored.wall_rolling = cf.dem->scene.wall_rolling;
     if (config::with_overrides(config::read_case_file(opt.case_path), stored).resolved_yaml != cf.resolved_yaml)
       throw std::invalid_argument(opt.case_path + " does not match the case stored in " +
                                   io::checkpoint_path(opt.resume_dir) +
@@ -117,10 +121,10 @@ int cmd_dem(const Args& args) {
     std::fprintf(stderr, "centrec dem: warning: checkpoint written by %s, resuming with %s\n", ck->code_version.c_str(),
                  centrec::io::code_version());
   // The command-line values enter the resolved case (outputs and checkpoint record what
-  // ran) and pass the same checks as the case file's.
-  if (opt.overrides.threads || opt.overrides.duration) cf = checked_overrides(cf, opt.overrides);
-  config::DemCase dc = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, {});
-  if (!opt.engine.wall_rolling_model.empty()) apply_wall_rolling_model(dc, opt.engine.wall_rolling_model);
+  // ran) and pass the same checks as the case file's; effective_dem applies them, as for
+  // `centrec run`.
+  cf = checked_overrides(cf, opt.overrides);
+  const config::DemCase dc = checked_dem(cf, opt.overrides);
   const io::OutputFolder out(opt.out_dir);
   const io::RunFolderClaim claim(opt.out_dir, "centrec dem " + (ck ? "--resume " + opt.resume_dir : opt.case_path),
                                  ck ? io::FolderUse::resume : folder_use(opt.overwrite));

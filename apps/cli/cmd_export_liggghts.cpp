@@ -2,9 +2,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "cli/case_overrides.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
-#include "cli/dem_engine_options.hpp"
 #include "config/case_file.hpp"
 #include "liggghts/liggghts_export.hpp"
 
@@ -23,16 +23,16 @@ int cmd_export_liggghts(const Args& args) {
     return 0;
   }
   std::string case_path, out_dir;
-  std::string rolling;
+  config::Overrides overrides;
   CommandLine app("export-liggghts");
   app.add_option("CASE", case_path)->required();
   app.add_option("--out", out_dir)->required();
-  app.add_option("--wall-rolling-model", rolling);
+  add_override_flags(app, overrides, {OverrideFlag::wall_rolling_model});
   app.read(args);
   const config::CaseFile cf = config::read_case_file(case_path);
   if (!cf.dem) throw std::invalid_argument(case_path + " has no `dem:` section");
-  config::DemCase dc = *cf.dem;
-  if (!rolling.empty()) apply_wall_rolling_model(dc, rolling);
+  // The `dem:` section as given (the deck derives nothing from `receiver:`), with the override.
+  const config::DemCase dc = config::effective_dem(*cf.dem, nullptr, overrides);
   const liggghts::LiggghtsDeckPlan plan = liggghts::export_liggghts(cf, dc, out_dir);
   std::printf("wrote %s/%s: dt %.3g s, %lld glued + %lld free particles, %lld + %lld steps, dumps every %lld steps\n",
               out_dir.c_str(), plan.deck.c_str(), plan.dt, static_cast<long long>(plan.glued),

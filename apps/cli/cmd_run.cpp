@@ -83,10 +83,12 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
   const int per_child = std::max(1, threads / parallel);
   const io::OutputFolder out(out_dir);
   const io::RunFolderClaim claim(out_dir, "centrec run --replicas " + case_path, folder_use(overwrite));
-  // The command as given, minus the options this sets per replica (--overwrite is passed on:
-  // the replicas' folders are the earlier run's too).
-  const Args common =
-      without_options(app, args, {"--out", "--seed", "--replicas", "--threads", "--cache", "--no-plots"});
+  // The command as given, minus the options this sets per replica (the override flags are
+  // given anew from the overrides; --overwrite is passed on: the replicas' folders are the
+  // earlier run's too).
+  std::vector<std::string> set_here = override_flag_names();
+  set_here.insert(set_here.end(), {"--out", "--replicas", "--cache", "--no-plots"});
+  const Args common = without_options(app, args, set_here);
   const std::string exe = own_executable();
   std::vector<ChildJob> jobs;
   std::vector<std::uint64_t> seeds;
@@ -96,8 +98,12 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
     io::ensure_directory(dir);
     ChildJob job{{exe, "run"}, dir + "/run.log"};
     job.argv.insert(job.argv.end(), common.begin(), common.end());
-    job.argv.insert(job.argv.end(), {"--out", dir, "--cache", o.cache_dir, "--seed", std::to_string(base + k),
-                                     "--threads", std::to_string(per_child)});
+    job.argv.insert(job.argv.end(), {"--out", dir, "--cache", o.cache_dir});
+    config::Overrides replica = o.overrides;
+    replica.seed = static_cast<std::uint64_t>(base + k);
+    replica.threads = per_child;
+    const Args flags = override_args(replica);
+    job.argv.insert(job.argv.end(), flags.begin(), flags.end());
     if (no_plots || k > 0) job.argv.push_back("--no-plots");  // replica 0 draws the figures
     jobs.push_back(job);
     seeds.push_back(static_cast<std::uint64_t>(base + k));

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cli/case_overrides.hpp"
 #include "cli/child_processes.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
@@ -42,39 +43,36 @@ void print_sweep_help(const CommandLine& app) {
       "deviation over the seeds (*_std columns).\n");
 }
 
-// The `centrec run` of one point, its stdout/stderr in DIR/run.log. Every point runs with
-// --allow-unsteady: a point whose DEM did not reach steady flow is reported as such in the
-// table rather than lost.
+// The `centrec run` of one point, its stdout/stderr in DIR/run.log: the point's speed and
+// flow and one DEM thread as the override flags write them (cli/case_overrides.hpp). Every
+// point runs with --allow-unsteady: a point whose DEM did not reach steady flow is reported
+// as such in the table rather than lost.
 ChildJob point_job(const std::string& exe, const std::string& case_path, const std::string& cache, const Point& p,
                    bool allow_small_drum, int replicas, bool overwrite) {
   io::ensure_directory(p.dir);
-  // Full precision: std::to_string's six decimals would turn 1e-7 kg/s into 0.
-  auto exact = [](double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.17g", v);
-    return std::string(b);
-  };
-  ChildJob job{{exe, "run", case_path, "--out", p.dir, "--cache", cache, "--speed-rpm", exact(p.rpm), "--mass-flow",
-                exact(p.mdot), "--threads", "1", "--no-plots", "--allow-unsteady"},
-               p.dir + "/run.log"};
+  config::Overrides o;
+  o.speed_rpm = p.rpm;
+  o.mass_flow = p.mdot;
+  o.threads = 1;
+  ChildJob job{{exe, "run", case_path, "--out", p.dir, "--cache", cache}, p.dir + "/run.log"};
+  const Args flags = override_args(o);
+  job.argv.insert(job.argv.end(), flags.begin(), flags.end());
+  job.argv.insert(job.argv.end(), {"--no-plots", "--allow-unsteady"});
   if (allow_small_drum) job.argv.push_back("--allow-small-drum");
   if (overwrite) job.argv.push_back("--overwrite");
   if (replicas > 1) job.argv.insert(job.argv.end(), {"--replicas", std::to_string(replicas)});
   return job;
 }
 
-// The shortest text (at least 6 significant digits) that reads back as v: two different
-// values never share a folder name.
-std::string exact_text(double v) {
-  char b[40];
-  for (int digits = 6; digits <= 17; ++digits) {
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    if (std::strtod(b, nullptr) == v) break;
-  }
-  return b;
+// The point's speed and flow as the override flags write them (each reads back as itself):
+// two different points never share a folder name.
+std::string point_name(double rpm, double mdot) {
+  config::Overrides o;
+  o.speed_rpm = rpm;
+  o.mass_flow = mdot;
+  const Args a = override_args(o);  // {"--speed-rpm", rpm, "--mass-flow", mdot}
+  return "rpm" + a[1] + "_mdot" + a[3];
 }
-
-std::string point_name(double rpm, double mdot) { return "rpm" + exact_text(rpm) + "_mdot" + exact_text(mdot); }
 }  // namespace
 
 int cmd_sweep(const Args& args) {

@@ -40,6 +40,7 @@ DemCase effective_dem(const DemCase& dem, const ReceiverCase* receiver, const Ov
   if (o.threads) d.scene.threads = *o.threads;
   if (o.duration) d.run.duration = *o.duration;
   if (o.seed) d.scene.seed = *o.seed;
+  if (o.wall_rolling) d.scene.wall_rolling = *o.wall_rolling;
   if (receiver) {
     apply_receiver(effective_receiver(*receiver, o), d, o.any_operating_point());
   } else {

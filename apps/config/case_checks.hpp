@@ -15,13 +15,16 @@
 
 namespace centrec::config {
 
-// Command-line values that replace the case's (`centrec dem`, `centrec run`); unset = the case's.
+// Command-line values that replace the case's (`centrec dem`, `centrec run`,
+// `centrec export-liggghts`; their flags: apps/cli/case_overrides.cpp); unset = the
+// case's. effective_dem is the one place they are applied.
 struct Overrides {
   std::optional<int> threads;       // dem.run.threads
   std::optional<double> duration;   // dem.run.duration, s
   std::optional<double> speed_rpm;  // the receiver's speed, or the DEM drum's without a receiver
   std::optional<double> mass_flow;  // the receiver's mass flow, or the DEM feeder's, kg/s
   std::optional<std::uint64_t> seed;  // dem.seed (a replica of the same case)
+  std::optional<dem::WallRolling> wall_rolling;  // dem.contacts.wall_rolling_model
   bool any_operating_point() const { return speed_rpm || mass_flow; }
 };
 

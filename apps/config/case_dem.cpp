@@ -2,6 +2,7 @@
 #include "config/shared_ranges.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,12 @@ dem::PairInteraction read_pair(MapReader m, const dem::PairInteraction& def) {
   about.pop_back();
   const std::string model = m.choice("rolling_model", dem::rolling_model_info(def.rolling_model).name, models, about);
   dem::rolling_model_named(model, p.rolling_model);
+  // The model's own coefficients, keys beside rolling_model (another model's are unknown keys).
+  dem::for_each_rolling_coefficient(p.rolling_model, [&](std::size_t k, const dem::RollingCoefficient& c) {
+    const double fallback = def.rolling_model == p.rolling_model ? def.rolling_coefficients[k] : c.fallback;
+    const double highest = c.highest < dem::kInfinity ? c.highest : std::numeric_limits<double>::infinity();
+    p.rolling_coefficients[k] = m.number(c.key, fallback, {c.lowest, highest, c.lowest_open, false}, c.unit, c.meaning);
+  });
   m.finish();
   return p;
 }

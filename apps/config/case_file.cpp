@@ -65,16 +65,19 @@ CaseFile read_case_recording(const std::string& text, const std::string& path, s
 }
 
 CaseFile with_overrides(const CaseFile& cf, const Overrides& o) {
-  if (!o.threads && !o.duration) return cf;
+  if (!o.threads && !o.duration && !o.seed && !o.wall_rolling) return cf;
   YAML::Node root = YAML::Load(cf.resolved_yaml);
-  YAML::Node run = root["dem"]["run"];
-  if (o.threads) run["threads"] = *o.threads;
+  YAML::Node dem = root["dem"];
+  if (o.threads) dem["run"]["threads"] = *o.threads;
   if (o.duration) {
     std::ostringstream v;
     v.precision(10);
     v << *o.duration;
-    run["duration"] = v.str();
+    dem["run"]["duration"] = v.str();
   }
+  if (o.seed) dem["seed"] = *o.seed;
+  if (o.wall_rolling)
+    dem["contacts"]["wall_rolling_model"] = *o.wall_rolling == dem::WallRolling::relative ? "relative" : "liggghts";
   YAML::Emitter e;
   e << root;
   return read_case_text(e.c_str(), cf.path);

@@ -36,9 +36,10 @@ CaseFile read_case_text(const std::string& text, const std::string& path);
 // ConfigError the keys read before it stay in `keys`.
 CaseFile read_case_recording(const std::string& text, const std::string& path, std::vector<KeyRecord>& keys);
 
-// The case with the overrides' run.threads and run.duration written into its `dem:`
-// section, read again (and so checked again): the resolved configuration that outputs and
-// checkpoints record holds what the run actually does. Throws ConfigError.
+// The case with the overrides that are keys of its `dem:` section (run.threads,
+// run.duration, seed, contacts.wall_rolling_model) written into it, read again (and so
+// checked again): the resolved configuration that outputs and checkpoints record holds
+// what the run actually does (effective_dem applies them to the DEM). Throws ConfigError.
 CaseFile with_overrides(const CaseFile& cf, const Overrides& o);
 
 }  // namespace centrec::config

@@ -40,7 +40,7 @@ std::string coupled(const std::string& thermal, const std::string& receiver = ""
 std::string thermal(const std::string& t) { return replaced(kThermal, "THERMAL", t); }
 
 std::vector<Walk> walks() {
-  return {
+  std::vector<Walk> w = {
       {"", coupled("")},
       {"", coupled("", ", particle_diameter: 1.2e-3"), false, true},
       {"", thermal("")},
@@ -58,6 +58,16 @@ std::vector<Walk> walks() {
       {"kind: pulse", thermal("flux: {time: {kind: pulse}}, transient: {t_end: 10, mass_flow: {kind: pulse}}")},
       {"a coupled case", coupled("") + "film: {mapping: as_measured}\n", false, true},
   };
+  // Each rolling model with coefficients of its own: its keys beside rolling_model.
+  for (const dem::RollingModelInfo& m : dem::kRollingModels) {
+    if (!m.coefficients[0].key) continue;
+    const std::string pair = std::string("{rolling_model: ") + m.name + "}";
+    w.push_back({std::string("dem.contacts.*.rolling_model: ") + m.name,
+                 replaced(coupled(""), "dem: {sampling: {turns: 1}}",
+                          "dem: {sampling: {turns: 1}, contacts: {particle_particle: " + pair +
+                              ", particle_wall: " + pair + "}}")});
+  }
+  return w;
 }
 
 // The top-level part of a key path ("" for the top-level keys themselves).

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
@@ -158,32 +159,54 @@ void visit_engine(IO& io, dem::SimulationState& s) {
           [](const dem::Material& m, std::vector<double>& o) { o.insert(o.end(), {m.youngs_modulus, m.poisson_ratio, m.density}); },
           [](const double* p, dem::Material& m) { m = {p[0], p[1], p[2]}; });
   // The pair interactions: their numeric fields as columns, their rolling models by name
-  // (an attribute; a checkpoint without it was written when EPSD2 was the only model).
+  // with the model's own coefficients (an attribute, "epsd2 sds:100:0.5", each coefficient
+  // written exactly; a checkpoint without it was written when EPSD2 was the only model).
   std::size_t numeric = 0;
-  dem::for_each_pair_field([&](const char*, auto, double, double, bool) { ++numeric; }, [](const char*, auto) {});
+  dem::for_each_pair_field([&](const char*, auto, double, double, bool, const char*) { ++numeric; },
+                           [](const char*, auto, auto) {});
   records(io, g + "/interactions", s.interactions, numeric, "1",
           [](const dem::PairInteraction& m, std::vector<double>& o) {
-            dem::for_each_pair_field([&](const char*, auto f, double, double, bool) { o.push_back(m.*f); },
-                                     [](const char*, auto) {});
+            dem::for_each_pair_field([&](const char*, auto f, double, double, bool, const char*) { o.push_back(m.*f); },
+                                     [](const char*, auto, auto) {});
           },
           [](const double* p, dem::PairInteraction& m) {
-            dem::for_each_pair_field([&](const char*, auto f, double, double, bool) { m.*f = *p++; },
-                                     [](const char*, auto) {});
+            dem::for_each_pair_field([&](const char*, auto f, double, double, bool, const char*) { m.*f = *p++; },
+                                     [](const char*, auto, auto) {});
           });
   std::string models;
   if constexpr (IO::reading) {
     if (io.has(g, "interaction_rolling_models")) {
       io.text(g, "interaction_rolling_models", models);
       std::istringstream names(models);
-      std::string name;
-      for (dem::PairInteraction& m : s.interactions)
-        if (!(names >> name) || !dem::rolling_model_named(name, m.rolling_model))
+      std::string word;
+      for (dem::PairInteraction& m : s.interactions) {
+        bool ok = static_cast<bool>(names >> word);
+        std::istringstream parts(word);
+        std::string name;
+        ok = ok && std::getline(parts, name, ':') && dem::rolling_model_named(name, m.rolling_model);
+        m.rolling_coefficients = {};
+        if (ok)
+          dem::for_each_rolling_coefficient(m.rolling_model, [&](std::size_t k, const dem::RollingCoefficient&) {
+            std::string v;
+            char* end = nullptr;
+            ok = ok && std::getline(parts, v, ':') && !v.empty();
+            if (ok) m.rolling_coefficients[k] = std::strtod(v.c_str(), &end);
+            ok = ok && end == v.c_str() + v.size();
+          });
+        if (!ok || parts.peek() != EOF)
           throw std::runtime_error("checkpoint: interaction_rolling_models \"" + models +
-                                   "\" does not name a rolling model for each interaction");
+                                   "\" does not name a rolling model with its coefficients for each interaction");
+      }
     }
   } else {
-    for (const dem::PairInteraction& m : s.interactions)
+    for (const dem::PairInteraction& m : s.interactions) {
       models += std::string(models.empty() ? "" : " ") + dem::rolling_model_info(m.rolling_model).name;
+      dem::for_each_rolling_coefficient(m.rolling_model, [&](std::size_t k, const dem::RollingCoefficient&) {
+        char b[32];
+        std::snprintf(b, sizeof b, ":%.17g", m.rolling_coefficients[k]);
+        models += b;
+      });
+    }
     io.text(g, "interaction_rolling_models", models);
   }
   vec3s(io, g + "/wall_origins", s.wall_origins, "m");

@@ -345,6 +345,13 @@ std::vector<std::string> liggghts_inexpressible(const config::DemCase& dc) {
         "contacts.wall_rolling_model: relative - LIGGGHTS 3.8 mesh walls pass only a linear wall velocity, so its "
         "rolling friction sees the particle's absolute angular velocity; set `wall_rolling_model: liggghts` (or "
         "pass --wall-rolling-model liggghts) to run the same physics on both engines");
+  for (const auto& [key, pair] : {std::pair{"particle_particle", &c.particle_particle}, std::pair{"particle_wall", &c.particle_wall}})
+    if (!dem::rolling_model_info(pair->rolling_model).liggghts) {
+      const std::string name = dem::rolling_model_info(pair->rolling_model).name;
+      why.push_back(std::string("contacts.") + key + ".rolling_model: " + name + " - LIGGGHTS 3.8 has no " + name +
+                    " rolling model (its rolling_friction offers " + liggghts_rolling_models() +
+                    "); choose one of those or run on the native engine");
+    }
   if (c.drum.omega == 0.0) why.push_back("drum.speed_rpm: 0 - the deck's rotating wall needs a non-zero speed");
   if (!dc.initial_film_from_run.empty())
     why.push_back("initial_film.from_run - the deck starts from the case's own starting film (initial_film.particles)");

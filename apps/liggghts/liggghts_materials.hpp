@@ -22,10 +22,16 @@ struct LiggghtsMaterials {
 // "fix m1..m5 property/global ..." then the pair_style and pair_coeff lines.
 std::string liggghts_material_commands(const LiggghtsMaterials& m);
 
+// The `rolling_friction` keyword of a model; throws std::invalid_argument naming the model
+// when LIGGGHTS 3.8 has none (dem/rolling_models.hpp, RollingModelInfo::liggghts).
+std::string liggghts_rolling_keyword(dem::RollingModel model);
+// The models LIGGGHTS 3.8 has, "epsd2, cdt".
+std::string liggghts_rolling_models();
+
 // The contact model arguments of `pair_style gran` (p: particle-particle) and of a
 // `fix wall/gran` (p: particle-wall).
 inline std::string liggghts_contact_model(const LiggghtsContactPair& p) {
-  return std::string("model hertz tangential history rolling_friction ") + dem::rolling_model_info(p.rolling_model).liggghts;
+  return "model hertz tangential history rolling_friction " + liggghts_rolling_keyword(p.rolling_model);
 }
 
 }  // namespace centrec::liggghts

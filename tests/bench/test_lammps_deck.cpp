@@ -140,6 +140,32 @@ TEST(LammpsDeck, DeckCarriesTheLaw) {
   fs::remove_all(dir);
 }
 
+// An SDS case (dem/rolling_models.hpp: LAMMPS has `rolling sds`) exports its own k_roll,
+// gamma_roll and mu_roll, the wall's scaled from R* = r to LAMMPS' r_eff (torque k r_eff^2
+// theta equal to k R*^2 theta); CDT, which LAMMPS lacks, is refused by name.
+TEST(LammpsDeck, SdsCaseExportsItsOwnCoefficients) {
+  FilmCase c;
+  c.rolling_model = centrec::dem::RollingModel::sds;
+  c.rolling_coefficients = {250.0, 0.02};
+  const std::string deck = lammps_contact_commands(c, lammps_law(c));
+  const auto pair = line_tokens(deck, "pair_coeff * * ");
+  EXPECT_EQ(after(pair, "sds"), 250.0);
+  EXPECT_EQ(after(pair, "sds", 1), 0.02);
+  EXPECT_EQ(after(pair, "sds", 2), 0.26);
+  const double r = 0.6e-3, R = 0.06, wall_r_eff = r * 2.0 * R / (2.0 * R - r), s2 = (r / wall_r_eff) * (r / wall_r_eff);
+  const auto wall = line_tokens(deck, "fix wall all wall/gran/region granular ");
+  EXPECT_NEAR(after(wall, "sds"), 250.0 * s2, 1e-12 * 250.0);
+  EXPECT_NEAR(after(wall, "sds", 1), 0.02 * s2, 1e-15);
+  EXPECT_NEAR(after(wall, "sds", 2), 0.26 * r / wall_r_eff, 1e-12);
+  c.rolling_model = centrec::dem::RollingModel::cdt;
+  try {
+    lammps_law(c);
+    FAIL() << "a CDT case was given an SDS rolling model";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("rolling_model: cdt"), std::string::npos) << e.what();
+  }
+}
+
 // Two particles and one at the wall, overlapping and moving: the deck's coefficients give
 // centrec's Hertz-Mindlin normal force and both dashpots (dem/hertz_mindlin.hpp), for the
 // pair and for the drum wall, at the set-up and after a step of a run continued without

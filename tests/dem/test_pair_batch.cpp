@@ -1,8 +1,9 @@
 // The force pass's AVX2 pair batch (dem/pair_batch_avx2.hpp) against the scalar law
 // (pair_contact_input + evaluate_contact): every result the same bits, for random contacts
 // (overlaps, velocities and histories over decades, sliding and sticking, rolling capped
-// and not, mu_r = 0, mixed materials, batches of one to four pairs), and a film run with
-// the batch against the same run without it.
+// and not, mu_r = 0, mixed materials, every rolling model of dem/rolling_models.hpp alone
+// and mixed in the lanes, batches of one to four pairs), and a film run with the batch
+// against the same run without it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,16 +33,21 @@ struct Random {
   Vec3 vec(double lo, double hi) { return log_uniform(lo, hi) * direction(); }
 };
 
-// Material pairs: random moduli, restitution, friction; a quarter with mu_r = 0; half of
-// them EPSD2, half CDT rolling.
+// Material pairs: random moduli, restitution, friction; a fifth with mu_r = 0; the rolling
+// models of kRollingModels in turn, each own coefficient random about its default (log-
+// uniform over four decades; one of zero default from 1e-6 to 0.1 or zero).
 std::vector<PairConstants> random_pairs(Random& rnd, int count) {
   std::vector<PairConstants> pcs;
   for (int k = 0; k < count; ++k) {
     const Material a{rnd.log_uniform(1e6, 1e9), rnd.uniform(0.1, 0.45), rnd.uniform(1000, 8000)};
     const Material b{rnd.log_uniform(1e6, 1e9), rnd.uniform(0.1, 0.45), rnd.uniform(1000, 8000)};
-    // Rolling models: EPSD2 and CDT in turn.
-    const PairInteraction p{rnd.uniform(0.1, 1.0), rnd.uniform(0.0, 1.2), k % 4 == 0 ? 0.0 : rnd.uniform(0.0, 0.6),
-                            k % 2 == 0 ? RollingModel::epsd2 : RollingModel::cdt};
+    PairInteraction p{rnd.uniform(0.1, 1.0), rnd.uniform(0.0, 1.2), k % 5 == 0 ? 0.0 : rnd.uniform(0.0, 0.6),
+                      kRollingModels[static_cast<std::size_t>(k) % kRollingModelCount].model};
+    for_each_rolling_coefficient(p.rolling_model, [&](std::size_t s, const RollingCoefficient& c) {
+      p.rolling_coefficients[s] = c.fallback > 0.0      ? rnd.log_uniform(1e-2 * c.fallback, 1e2 * c.fallback)
+                                  : rnd.integer(4) == 0 ? 0.0
+                                                        : rnd.log_uniform(1e-6, 0.1);
+    });
     pcs.push_back(make_pair_constants(a, b, p));
   }
   return pcs;
@@ -70,33 +76,39 @@ TEST(PairBatch, LawLanesAreScalarBitForBit) {
   const std::vector<PairConstants> pcs = random_pairs(rnd, 16);
   const double dt = 1e-6;
   long compared = 0, slid = 0, roll_capped = 0;
+  long per_model[kRollingModelCount] = {}, alone[kRollingModelCount] = {};
   for (int call = 0; call < 50000; ++call) {
     const PairConstants* pc[pb::kLanes];
     ContactInput in[pb::kLanes];
     ContactHistory old[pb::kLanes];
+    const bool one_pair = call % 8 == 0;  // every lane of one material pair: the one-model path
+    const int first = rnd.integer(16);
     for (int k = 0; k < pb::kLanes; ++k) {
-      pc[k] = &pcs[static_cast<std::size_t>(rnd.integer(16))];
+      pc[k] = &pcs[static_cast<std::size_t>(one_pair ? first : rnd.integer(16))];
       const double ri = rnd.uniform(1e-4, 1e-3), rj = rnd.integer(4) == 0 ? 0.0 : rnd.uniform(1e-4, 1e-3);
       const double delta = rnd.log_uniform(1e-9, 0.05) * ri;
       const double r_eff = rj == 0.0 ? ri : ri * rj / (ri + rj);
-      in[k] = {delta, rnd.direction(), rnd.vec(1e-5, 3.0), rnd.vec(1e-3, 1e3), r_eff, rnd.uniform(1e-8, 1e-5),
-               ri - 0.5 * delta, rj == 0.0 ? 0.0 : rj - 0.5 * delta};
+      in[k] = {delta, rnd.direction(),         rnd.vec(1e-5, 3.0), rnd.vec(1e-3, 1e3),
+               r_eff, rnd.uniform(1e-8, 1e-5), ri - 0.5 * delta,   rj == 0.0 ? 0.0 : rj - 0.5 * delta};
       old[k] = random_history(rnd);
     }
     const auto d = [&](auto f) { return pb::lanes(f(0), f(1), f(2), f(3)); };
     const pb::ConstantLanes cl = pb::constant_lanes(pc[0], pc[1], pc[2], pc[3]);
-    const pb::ContactLanes il{d([&](int k) { return in[k].delta; }),   d([&](int k) { return in[k].n; }),
+    const pb::ContactLanes il{d([&](int k) { return in[k].delta; }),     d([&](int k) { return in[k].n; }),
                               d([&](int k) { return in[k].v_contact; }), d([&](int k) { return in[k].w_rel; }),
-                              d([&](int k) { return in[k].r_eff; }),   d([&](int k) { return in[k].m_eff; }),
-                              d([&](int k) { return in[k].arm_i; }),   d([&](int k) { return in[k].arm_j; })};
+                              d([&](int k) { return in[k].r_eff; }),     d([&](int k) { return in[k].m_eff; }),
+                              d([&](int k) { return in[k].arm_i; }),     d([&](int k) { return in[k].arm_j; })};
     const pb::HistoryLanes hl{d([&](int k) { return old[k].shear; }), d([&](int k) { return old[k].roll; })};
     const pb::ResultLanes r = pb::evaluate_contacts(cl, il, hl, dt);
     for (int k = 0; k < pb::kLanes; ++k) {
       const ContactResult s = evaluate_contact(*pc[k], in[k], old[k], dt);
       ++compared;
       slid += s.sliding;
-      const double roll_max = pc[k]->mu_r * in[k].r_eff * std::fabs(s.fn);  // on the cap: |Mr| = roll_max
-      roll_capped += pc[k]->mu_r > 0.0 && std::fabs(norm(s.history.roll) - roll_max) <= 1e-12 * roll_max;
+      ++per_model[static_cast<std::size_t>(pc[k]->rolling)];
+      alone[static_cast<std::size_t>(pc[k]->rolling)] += one_pair;
+      const double roll_max = pc[k]->mu_r * in[k].r_eff * std::fabs(s.fn);  // EPSD2 on the cap: |Mr| = roll_max
+      roll_capped += pc[k]->rolling == RollingModel::epsd2 && pc[k]->mu_r > 0.0 &&
+                     std::fabs(norm(s.history.roll) - roll_max) <= 1e-12 * roll_max;
       ASSERT_TRUE(same(lane(r.force, k), s.force)) << "call " << call << " lane " << k;
       ASSERT_TRUE(same(lane(r.torque_i, k), s.torque_i)) << "call " << call << " lane " << k;
       ASSERT_TRUE(same(lane(r.torque_j, k), s.torque_j)) << "call " << call << " lane " << k;
@@ -106,8 +118,14 @@ TEST(PairBatch, LawLanesAreScalarBitForBit) {
       ASSERT_TRUE(same(lane(r.history.roll, k), s.history.roll)) << "call " << call << " lane " << k;
     }
   }
-  std::printf("law lanes: %ld contacts compared bit for bit, %ld sliding, %ld on the rolling cap\n",
-              compared, slid, roll_capped);
+  std::printf("law lanes: %ld contacts compared bit for bit, %ld sliding, %ld on the EPSD2 rolling cap\n", compared,
+              slid, roll_capped);
+  for (std::size_t m = 0; m < kRollingModelCount; ++m) {
+    std::printf("  %s: %ld lanes, %ld of them in batches of one material pair\n", kRollingModels[m].name, per_model[m],
+                alone[m]);
+    EXPECT_GT(per_model[m], compared / 10) << kRollingModels[m].name;
+    EXPECT_GT(alone[m], compared / 200) << kRollingModels[m].name;
+  }
   EXPECT_GT(slid, compared / 10);
   EXPECT_LT(slid, compared - compared / 10);
   EXPECT_GT(roll_capped, compared / 20);

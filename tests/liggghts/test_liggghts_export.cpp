@@ -11,6 +11,7 @@
 
 #include "config/case_file.hpp"
 #include "liggghts/liggghts_export.hpp"
+#include "liggghts/liggghts_materials.hpp"
 #include "liggghts/liggghts_stl.hpp"
 
 using namespace centrec::config;
@@ -141,6 +142,28 @@ TEST(LiggghtsExport, DrumMeshWithinAThousandthOfADiameter) {
               sagitta / d);
   EXPECT_LE(sagitta, 1e-3 * d);
   fs::remove_all(dir);
+}
+
+// A rolling model LIGGGHTS 3.8 lacks (dem/rolling_models.hpp, RollingModelInfo::liggghts
+// nullptr: sds) is refused with its key and name, before any file is written.
+TEST(LiggghtsExport, RefusesARollingModelLiggghtsLacksByName) {
+  CaseFile cf = small_case();
+  DemCase dc = *cf.dem;
+  dc.scene.particle_wall.rolling_model = centrec::dem::RollingModel::sds;
+  dc.scene.particle_wall.rolling_coefficients = centrec::dem::default_rolling_coefficients(centrec::dem::RollingModel::sds);
+  const fs::path dir = fresh_dir("refuse_sds");
+  try {
+    export_liggghts(cf, dc, dir.string());
+    FAIL() << "the sds rolling model was exported";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("contacts.particle_wall.rolling_model: sds - LIGGGHTS 3.8 has no sds"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "in.centrec"));
+  centrec::liggghts::LiggghtsMaterials m;
+  m.particle_particle = dc.scene.particle_wall;
+  EXPECT_THROW(centrec::liggghts::liggghts_material_commands(m), std::invalid_argument);
 }
 
 TEST(LiggghtsExport, RefusesTheRelativeWallRollingModelByName) {

@@ -303,3 +303,28 @@ TEST(CaseRefusals, EverySweepPointIsCheckedAsItsRunWouldBe) {
   EXPECT_HAS(error_of(with(kDem, "mass_flow: 8.925e-3", "mass_flow: 1e-300")),
              "dem.feeder.mass_flow: the feed 1e-300 kg/s delivers less than one particle");
 }
+
+// A rolling model's own coefficients are keys beside rolling_model (dem/rolling_models.hpp):
+// read with their defaults and ranges for that model, unknown keys for another.
+TEST(CaseRefusals, RollingModelCoefficientsAreTheirModelsKeys) {
+  const std::string head = "dem:\n  contacts:\n    particle_wall: {rolling_model: ";
+  const config::CaseFile given =
+      config::read_case_text(head + "sds, rolling_stiffness: 250, rolling_damping: 0.02}\n", "sds.yaml");
+  EXPECT_EQ(given.dem->scene.particle_wall.rolling_model, dem::RollingModel::sds);
+  EXPECT_EQ(given.dem->scene.particle_wall.rolling_coefficients, (dem::RollingCoefficients{250.0, 0.02}));
+  const config::CaseFile defaults = config::read_case_text(head + "sds}\n", "sds.yaml");
+  EXPECT_EQ(defaults.dem->scene.particle_wall.rolling_coefficients,
+            dem::default_rolling_coefficients(dem::RollingModel::sds));
+  for (const std::string& bad : {head + "sds, rolling_stiffness: 0}\n", head + "epsd2, rolling_stiffness: 250}\n",
+                                 head + "sds, rolling_damping: -1}\n"}) {
+    try {
+      config::read_case_text(bad, "bad.yaml");
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const config::ConfigError& e) {
+      const std::string what = e.what();
+      EXPECT_TRUE(what.find("rolling_stiffness") != std::string::npos ||
+                  what.find("rolling_damping") != std::string::npos)
+          << what;
+    }
+  }
+}

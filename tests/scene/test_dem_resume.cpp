@@ -190,7 +190,8 @@ TEST(DemResume, ControlledSliceStateRoundTripsThroughTheCheckpointFile) {
 }
 
 // The checkpoint keeps each pair interaction's rolling model (by name, beside the numeric
-// fields): a CDT particle-wall interaction comes back as CDT, EPSD2 as EPSD2.
+// fields) with the model's own coefficients: a CDT particle-wall interaction comes back as
+// CDT, EPSD2 as EPSD2, SDS as SDS with its spring and dashpot to the bit.
 TEST(DemResume, CheckpointKeepsEachInteractionsRollingModel) {
   const std::string dir = temp_dir("centrec_rolling_models");
   RunCheckpoint c;
@@ -199,7 +200,7 @@ TEST(DemResume, CheckpointKeepsEachInteractionsRollingModel) {
   c.scene.engine.materials = {dem::Material{}, dem::Material{}};
   c.scene.engine.interactions = {dem::PairInteraction{0.5, 0.8, 0.2, dem::RollingModel::epsd2},
                                  dem::PairInteraction{0.4, 1e4, 0.3, dem::RollingModel::cdt},
-                                 dem::PairInteraction{0.4, 1e4, 0.3, dem::RollingModel::cdt},
+                                 dem::PairInteraction{0.4, 1e4, 0.3, dem::RollingModel::sds, {123.456789012345, 0.1 / 3.0}},
                                  dem::PairInteraction{0.5, 0.8, 0.0, dem::RollingModel::epsd2}};
   write_checkpoint(dir, c);
   const RunCheckpoint back = read_checkpoint(dir);
@@ -208,6 +209,7 @@ TEST(DemResume, CheckpointKeepsEachInteractionsRollingModel) {
     const dem::PairInteraction &a = c.scene.engine.interactions[k], &b = back.scene.engine.interactions[k];
     EXPECT_TRUE(dem::same(a, b)) << "interaction " << k;
     EXPECT_EQ(static_cast<int>(b.rolling_model), static_cast<int>(a.rolling_model)) << "interaction " << k;
+    EXPECT_EQ(b.rolling_coefficients, a.rolling_coefficients) << "interaction " << k;
   }
   std::printf("checkpoint rolling models: %s %s %s %s\n",
               dem::rolling_model_info(back.scene.engine.interactions[0].rolling_model).name,
