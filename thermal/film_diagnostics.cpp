@@ -3,11 +3,30 @@
 // only, independently of the cell residuals, so the balance residual tests conservation.
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <limits>
 
 #include "film_operator.hpp"
 #include "physical_constants.hpp"
 
 namespace centrec::thermal {
+
+namespace {
+double largest_magnitude(std::initializer_list<double> xs) {
+  double m = 0.0;
+  for (double x : xs) m = std::max(m, std::fabs(x));
+  return m;
+}
+}  // namespace
+
+double receiver_balance_scale(const FilmBalance& b) {
+  return largest_magnitude({b.aperture_power, b.spillage_loss, b.reflected_loss, b.emitted_loss, b.convected,
+                            b.walls_convected, b.wall, b.walls_insulation, b.carried, b.inlet_conduction, b.storage});
+}
+
+double film_balance_scale(const FilmBalance& b) {
+  return largest_magnitude({b.absorbed, b.emitted, b.convected, b.wall, b.carried, b.inlet_conduction, b.storage});
+}
 
 FilmBalance FilmOperator::balance(double t, const double* y) {
   const FilmGrid& g = grid_;
@@ -80,7 +99,9 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
   }
   b.receiver_residual = b.aperture_power - b.spillage_loss - b.reflected_loss - b.emitted_loss - b.convected - b.walls_convected - b.wall -
                         b.walls_insulation - b.carried - b.inlet_conduction - b.storage;
-  b.efficiency = b.aperture_power > 0 ? b.carried / b.aperture_power : 0.0;
+  b.efficiency = b.aperture_power > kBalanceTolerance * receiver_balance_scale(b)
+                     ? b.carried / b.aperture_power
+                     : std::numeric_limits<double>::quiet_NaN();
   return b;
 }
 

@@ -41,7 +41,7 @@ struct FilmBalance {
   double residual = 0.0;     // absorbed - emitted - convected - wall - carried - inlet_conduction - storage
   double T_out = 0.0;        // mixing-cup outlet temperature (weight rho_b u c_p), K
   double mass_flow = 0.0;    // kg/s
-  double efficiency = 0.0;   // carried / aperture_power
+  double efficiency = 0.0;   // carried / aperture_power; NaN without sunlight to speak of (below)
   // Receiver view (cavity model; the open-surface model fills the same fields with
   // aperture_power = incident, reflected_loss = (1 - alpha) incident, emitted_loss = emitted).
   double aperture_power = 0.0;    // concentrated sunlight entering through the aperture
@@ -74,6 +74,15 @@ struct KeffSection {
   double z = 0.0, moving_thickness = 0.0;
   double k_eff = 0.0, bed_conduction = 0.0, radiation = 0.0, mixing = 0.0;
 };
+
+// The balances are judged against their largest power: the receiver's (the aperture power,
+// or a loss or the carried power where the sunlight is weak) and the film's (absorbed,
+// emitted, convected, wall, carried, inlet conduction, storage), W. A residual above
+// kBalanceTolerance of it is a defect, not a result; an aperture power below that fraction
+// of it leaves the efficiency undefined (NaN).
+constexpr double kBalanceTolerance = 1e-6;
+double receiver_balance_scale(const FilmBalance& b);
+double film_balance_scale(const FilmBalance& b);
 
 class FilmOperator : public OdeSystem {
  public:

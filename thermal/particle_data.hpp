@@ -28,6 +28,9 @@ struct ParticleData {
   RangedValue k_s;          // W/(m K)
   RangedValue alpha;        // solar absorptance of the film
   RangedValue epsilon;      // thermal emissivity
+  // The temperatures the data hold over, K: the c_p correlation's fitted range, 50-1100 C
+  // (Siegel et al. 2010 as coded in SolarTherm's CarboHSP medium, docs/particle_data.md).
+  double T_min = 323.15, T_max = 1373.15;
 };
 
 // Every named particle, the default (the paper's) first.

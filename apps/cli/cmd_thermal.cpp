@@ -48,13 +48,14 @@ int cmd_thermal(const Args& args) {
   summary["wall_time_s"] = seconds;
   io::write_json_file(out_dir + "/summary.json", summary);
   const auto& b = r.balance;
-  std::printf("centrec thermal %s: %s %dx%d, T_in %.2f K -> T_out %.2f K (%.2f C), efficiency %.4f, mdot %.4g kg/s\n",
+  std::printf("centrec thermal %s: %s %dx%d, T_in %.2f K -> T_out %.2f K (%.2f C), efficiency %s, mdot %.4g kg/s\n",
               c.path.c_str(), c.grid.lumped ? "1D" : "2D", r.op->grid().nz, r.op->grid().nxi, c.model.T_in, b.T_out,
-              b.T_out - 273.15, b.efficiency, b.mass_flow);
+              b.T_out - 273.15, runs::efficiency_text(b.efficiency).c_str(), b.mass_flow);
   std::printf("  powers (W): incident %.6g, absorbed %.6g, emitted %.6g, convected %.6g, wall %.6g, carried %.6g; "
-              "balance residual %.2e of absorbed\n",
+              "balance residual %.2e of %s\n",
               b.incident, b.absorbed, b.emitted, b.convected, b.wall, b.carried,
-              b.absorbed > 0 ? b.residual / b.absorbed : 0.0);
+              b.residual / thermal::film_balance_scale(b),
+              b.absorbed >= thermal::film_balance_scale(b) ? "absorbed" : "the film's largest power");
   runs::print_receiver_report(c, r);
   std::printf("  k_eff film mean %.4g W/(m K); steady solve %.3f s (%d Newton, %ld BDF steps)%s; total %.3f s\n",
               summary["k_eff"]["film_mean"]["k_eff"].get<double>(), r.steady_seconds, r.steady.newton_iterations,

@@ -1,5 +1,6 @@
 #include "config/case_file.hpp"
 
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -52,7 +53,23 @@ CaseFile read_case(MapReader root, const std::string& path) {
 
 }  // namespace
 
-CaseFile read_case_file(const std::string& path) { return read_case(MapReader::from_file(path), path); }
+CaseFile read_case_file(const std::string& path) {
+  MapReader root = MapReader::from_file(path);
+  CaseFile c = read_case(root, path);
+  // A settled start's source run must be there when the case is read from its file (a
+  // checkpoint's resolved configuration is read again after its source may have gone: a
+  // resume does not need it).
+  if (c.dem && !c.dem->initial_film_from_run.empty()) {
+    std::string dir = c.dem->initial_film_from_run;
+    const std::string case_dir = case_directory(path);
+    if (dir[0] != '/' && !case_dir.empty()) dir = case_dir + "/" + dir;
+    if (!std::filesystem::is_regular_file(dir + "/checkpoint.h5"))
+      root.fail_path("dem.initial_film.from_run", "no run to start from: " + dir +
+                                                      "/checkpoint.h5 does not exist (run that case first, into "
+                                                      "that folder)");
+  }
+  return c;
+}
 
 CaseFile read_case_text(const std::string& text, const std::string& path) {
   return read_case(MapReader::from_string(text, path + " (resolved configuration)"), path);

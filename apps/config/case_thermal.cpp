@@ -288,7 +288,16 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                               "advection scheme along z (van Leer: second order; upwind: first order)") == "upwind"
                          ? th::Advection::upwind
                          : th::Advection::van_leer;
-  m.T_in = t.number("T_in", 873.15, kTemperature, "K", "particle inlet temperature");
+  m.T_in = t.number("T_in", 873.15, kTemperature, "K", "particle inlet temperature (within thermal.particle's data)");
+  const th::ParticleData& particle = th::particle_data(c.particle);
+  if (m.T_in < particle.T_min || m.T_in > particle.T_max) {
+    char why[256];
+    std::snprintf(why, sizeof why,
+                  "%g K lies outside the range %s's data hold (c_p, k_s, absorptance, emissivity: %g-%g K, "
+                  "docs/particle_data.md)",
+                  m.T_in, c.particle.c_str(), particle.T_min, particle.T_max);
+    t.fail("T_in", why);
+  }
   read_conductivity(t.child("conductivity", "effective conductivity of the film"), m);
   MapReader hc = t.child("heat_capacity", "the particles' specific heat");
   if (hc.choice("model", "particle", {"particle", "constant"}, "c_p(T) of thermal.particle, or a constant") == "constant")

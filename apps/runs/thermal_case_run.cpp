@@ -1,7 +1,9 @@
 #include "runs/thermal_case_run.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace centrec::runs {
 
@@ -10,6 +12,23 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 }  // namespace
+
+void check_balance(const thermal::FilmBalance& b) {
+  const struct {
+    const char* what;
+    double residual, scale;
+  } balances[] = {{"film", b.residual, thermal::film_balance_scale(b)},
+                  {"receiver", b.receiver_residual, thermal::receiver_balance_scale(b)}};
+  for (const auto& x : balances)
+    if (!(std::fabs(x.residual) <= thermal::kBalanceTolerance * x.scale)) {
+      char why[400];
+      std::snprintf(why, sizeof why,
+                    "the %s's energy balance does not close: residual %.3g W against its largest power %.3g W "
+                    "(more than %.0e of it); the solution is not a result",
+                    x.what, x.residual, x.scale, thermal::kBalanceTolerance);
+      throw std::runtime_error(why);
+    }
+}
 
 ThermalRun run_thermal_case(const config::ThermalCase& c, bool report) {
   ThermalRun r;
@@ -24,6 +43,7 @@ ThermalRun run_thermal_case(const config::ThermalCase& c, bool report) {
   r.steady_seconds = since(t0);
   if (report) std::fprintf(stderr, "thermal: steady state in %.2f s\n", r.steady_seconds);
   r.balance = op.balance(0.0, r.steady.y.data());
+  check_balance(r.balance);
   r.fields = op.fields(0.0, r.steady.y.data());
   r.keff = op.keff_sections(r.steady.y.data());
   if (c.transient) {

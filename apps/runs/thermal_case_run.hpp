@@ -26,5 +26,8 @@ struct ThermalRun {
 // Throws thermal::SolverError / std::invalid_argument with a clear message on failure.
 // report: the phase lines on stderr (off for the error budget's many solves).
 ThermalRun run_thermal_case(const config::ThermalCase& c, bool report = true);
+// Throws std::runtime_error if the film's or the receiver's balance misses closing by more
+// than thermal::kBalanceTolerance of its largest power (thermal/film_operator.hpp).
+void check_balance(const thermal::FilmBalance& b);
 
 }  // namespace centrec::runs

@@ -1,5 +1,6 @@
 #include "runs/thermal_output.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -55,7 +56,7 @@ nlohmann::json receiver_json(const config::ThermalCase& c, const thermal::FilmBa
                       {"efficiency", b.efficiency},
                       {"h_convection_W_m2K", b.h_cavity},
                       {"balance_residual_W", b.receiver_residual},
-                      {"balance_residual_relative", P > 0 ? b.receiver_residual / P : 0.0}};
+                      {"balance_residual_relative", b.receiver_residual / thermal::receiver_balance_scale(b)}};
   if (c.model.cavity.enabled) {
     j["aperture_area_m2"] = op.aperture_area();
     j["flux_aperture_mean_W_m2"] = mean_flux(P, op.aperture_area());
@@ -264,7 +265,7 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
   j["efficiency"] = b.efficiency;
   j["powers_W"] = balance_json(b);
   j["receiver"] = receiver_json(c, b, *r.op);
-  j["balance_residual_relative"] = b.absorbed > 0 ? b.residual / b.absorbed : 0.0;
+  j["balance_residual_relative"] = b.residual / thermal::film_balance_scale(b);
   j["mass_flux_max_correction"] = g.max_flux_correction;
   nlohmann::json k;
   k["film_mean"] = {{"k_eff", section_mean(r.keff, &thermal::KeffSection::k_eff)},
@@ -313,6 +314,13 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
   return j;
 }
 
+std::string efficiency_text(double efficiency) {
+  if (std::isnan(efficiency)) return "not defined (the aperture power is below 1e-6 of the balance's largest power)";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4f", efficiency);
+  return b;
+}
+
 void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r) {
   const thermal::FilmBalance& b = r.balance;
   const double P = b.aperture_power;
@@ -325,14 +333,15 @@ void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r) {
     std::printf("  solar flux: %.4g W/m2 mean on the film (%.4g m2; open surface: no aperture)\n",
                 mean_flux(b.incident, A_film), A_film);
   auto pct = [P](double x) { return P > 0 ? 100.0 * x / P : 0.0; };
-  std::printf("  receiver (%s): aperture %.6g W -> carried %.6g W, efficiency %.4f (carried / aperture power)\n",
-              c.model.cavity.enabled ? "cavity" : "open surface", P, b.carried, b.efficiency);
+  std::printf("  receiver (%s): aperture %.6g W -> carried %.6g W, efficiency %s (carried / aperture power)\n",
+              c.model.cavity.enabled ? "cavity" : "open surface", P, b.carried, efficiency_text(b.efficiency).c_str());
   std::printf("  losses: reflected %.4g W (%.2f %%), emitted %.4g W (%.2f %%) through the %s, convective %.4g W "
-              "(%.2f %%, h %.3g W/(m2 K)), wall %.4g W (%.2f %%); balance residual %.2e of aperture power\n",
+              "(%.2f %%, h %.3g W/(m2 K)), wall %.4g W (%.2f %%); balance residual %.2e of %s\n",
               b.reflected_loss, pct(b.reflected_loss), b.emitted_loss, pct(b.emitted_loss),
               c.model.cavity.enabled ? "aperture" : "open surface", b.convected + b.walls_convected,
               pct(b.convected + b.walls_convected), b.h_cavity, b.wall + b.walls_insulation,
-              pct(b.wall + b.walls_insulation), P > 0 ? b.receiver_residual / P : 0.0);
+              pct(b.wall + b.walls_insulation), b.receiver_residual / thermal::receiver_balance_scale(b),
+              P >= thermal::receiver_balance_scale(b) ? "aperture power" : "the balance's largest power");
   const thermal::CavitySettings& cs = c.model.cavity;
   if (!c.model.cavity.enabled) return;
   if (cs.spillage > 0)

@@ -27,5 +27,7 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
 // receiver's power flow (aperture power, carried, losses through the aperture, convective
 // and wall losses, receiver efficiency, balance residual).
 void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r);
+// "0.8977", or why there is none (no sunlight to speak of: thermal::FilmBalance::efficiency).
+std::string efficiency_text(double efficiency);
 
 }  // namespace centrec::runs

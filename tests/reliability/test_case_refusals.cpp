@@ -153,6 +153,16 @@ TEST(CaseRefusals, ValidateRefusesWhatTheSceneCannotBuild) {
   EXPECT_HAS(error_of(with(kDem, "sampling:", "slice: {enabled: true, length_d: 9}\n  sampling:") +
                       "  initial_film: {particles: 100, axial_from: 0.01}\n"),
              "dem.initial_film.axial_from: a slice's film fills its whole period");
+  // A settled start needs its source run (the run failed as it built the drum).
+  EXPECT_HAS(error_of(std::string(kDem) + "  initial_film: {from_run: no_such_run}\n"),
+             "dem.initial_film.from_run: no run to start from: ");
+}
+
+TEST(CaseRefusals, ASettledStartsSourceThatIsThereIsRead) {
+  const std::string dir = temp_dir("from_run_there");
+  std::filesystem::create_directories(dir + "/source");
+  std::ofstream(dir + "/source/checkpoint.h5") << "its contents are read by the run\n";
+  EXPECT_NO_THROW(config::read_case_file(write_case(dir, std::string(kDem) + "  initial_film: {from_run: source}\n")));
 }
 
 // The loose film's count is refused exactly where the scene's lattice runs out (the bound
@@ -284,6 +294,17 @@ TEST(CaseRefusals, ThermalSetUpChecksAreMadeByTheReader) {
              "thermal.radiation.aperture_diameter: exceeds the drum diameter");
   EXPECT_HAS(error_of(with(cavity, "grid: {nz: 200, nxi: 40}", "grid: {nz: 100000, nxi: 2000}")),
              "GB for its band Jacobian");
+}
+
+// An inlet temperature the particle's data do not cover (3000 and 4500 K ran as physics).
+TEST(CaseRefusals, AnInletTemperatureOutsideTheParticlesDataIsRefused) {
+  std::ifstream in(CENTREC_SOURCE_DIR "/cases/thermal_centrec_cavity.yaml");
+  const std::string cavity((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* t : {"3000", "4500", "300"})
+    EXPECT_HAS(error_of(with(cavity, "T_in: 873.15", std::string("T_in: ") + t)),
+               std::string("thermal.T_in: ") + t + " K lies outside the range sg_bauxite's data hold");
+  EXPECT_EQ(error_of(with(cavity, "T_in: 873.15", "T_in: 1373.15")), "");
+  EXPECT_EQ(error_of(with(cavity, "T_in: 873.15", "T_in: 323.15")), "");
 }
 
 TEST(CaseRefusals, EverySweepPointIsCheckedAsItsRunWouldBe) {

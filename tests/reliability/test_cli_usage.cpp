@@ -90,19 +90,21 @@ TEST(CliUsage, AnUnwritableOutIsRefusedBeforeWork) {
 }
 
 TEST(CliUsage, AFailedRunLeavesNoEmptyFolders) {
-  // A DEM that fails as it builds the drum (more pre-filled particles than its packing
-  // places, though fewer than the densest packing the case check allows): `run` created
-  // the output and cache folders and removes them again.
+  // A DEM that fails as it builds the drum (a settled start whose source checkpoint is
+  // there but unreadable): `run` created the output and cache folders and removes them again.
   const std::string dir = temp_dir("cli_empty");
   std::filesystem::remove_all(dir + "/out");
   std::filesystem::remove_all(dir + "/cache");
+  std::filesystem::create_directories(dir + "/source");
+  std::ofstream(dir + "/source/checkpoint.h5") << "not HDF5\n";
   std::ofstream(dir + "/case.yaml") << "dem:\n  drum: {diameter: 0.03, length: 0.04275, speed_rpm: 320.16}\n"
-                                       "  initial_film: {particles: 22000}\n"
+                                       "  initial_film: {from_run: source}\n"
                                        "  run: {duration: 0.01, dt: 2.0e-5}\n  sampling: {turns: 1}\n"
                                        "thermal: {grid: {nz: 10, nxi: 4}}\n";
   const BinaryRun r = run_binary({"run", dir + "/case.yaml", "--out", dir + "/out/a", "--cache", dir + "/cache", "--allow-small-drum"}, 60.0);
-  EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_NE(r.err.find("do not fit"), std::string::npos) << r.err;
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("dem.initial_film.from_run = source"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("cannot resume from"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/out")) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/cache")) << r.err;
 }

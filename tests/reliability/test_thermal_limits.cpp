@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -69,4 +72,52 @@ thermal:
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_LT(wall, 30.0);
+}
+
+// Without sunlight to speak of the efficiency is not a figure (a flux of 1e-300 W/m2 printed
+// an efficiency of -3e298 and a residual of 4e289 "of aperture power"); the balances still
+// close against their largest power, the heat the film loses.
+TEST(ThermalLimits, AFilmWithoutSunlightHasNoEfficiency) {
+  const std::string dir = temp_dir("no_sun");
+  std::ifstream in(CENTREC_SOURCE_DIR "/cases/thermal_centrec_uniform.yaml");
+  const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* q : {"q_film: 1e-300", "q_film: 0"}) {
+    std::string text = base;
+    text.replace(text.find("q_film: 1.0e6"), 13, q);
+    text.replace(text.find("{nz: 200, nxi: 40}"), 18, "{nz: 100, nxi: 20}");
+    const runs::ThermalRun r = runs::run_thermal_case(config::read_thermal_case(write_case(dir, text)), false);
+    const thermal::FilmBalance& b = r.balance;
+    std::printf("%s: efficiency %g, receiver residual %.2e of %.4g W, film residual %.2e of %.4g W\n", q, b.efficiency,
+                b.receiver_residual / thermal::receiver_balance_scale(b), thermal::receiver_balance_scale(b),
+                b.residual / thermal::film_balance_scale(b), thermal::film_balance_scale(b));
+    EXPECT_TRUE(std::isnan(b.efficiency)) << q;
+    EXPECT_LT(std::fabs(b.receiver_residual), 1e-9 * thermal::receiver_balance_scale(b));
+    EXPECT_GT(thermal::receiver_balance_scale(b), 1e4);  // the film's losses, W
+  }
+}
+
+// A residual above 1e-6 of the balance's largest power stops the run instead of being
+// reported (a figure of a solution that does not conserve energy is not a result).
+TEST(ThermalLimits, ABalanceThatDoesNotCloseIsAnError) {
+  thermal::FilmBalance b;
+  b.aperture_power = b.absorbed = 1e4;
+  b.carried = 9e3;
+  b.emitted = b.emitted_loss = 1e3;
+  EXPECT_NO_THROW(runs::check_balance(b));
+  b.receiver_residual = 5e-3;  // 5e-7 of the aperture power
+  b.residual = -5e-3;
+  EXPECT_NO_THROW(runs::check_balance(b));
+  b.receiver_residual = 0.02;
+  try {
+    runs::check_balance(b);
+    ADD_FAILURE() << "a receiver residual of 2e-6 of its aperture power passed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the receiver's energy balance does not close: residual 0.02 W against its "
+                                         "largest power 1e+04 W"),
+              std::string::npos)
+        << e.what();
+  }
+  b.receiver_residual = 0.0;
+  b.residual = std::nan("");
+  EXPECT_THROW(runs::check_balance(b), std::runtime_error);
 }
