@@ -43,6 +43,8 @@ CaseFile read_case(MapReader root, const std::string& path) {
   }
   if (c.dem && c.thermal && c.thermal->film_source.from_dem())
     if (const auto p = coupled_run_problem(*c.dem, *c.thermal, c.receiver ? &*c.receiver : nullptr)) root.fail_path(p->key, p->message);
+  if (root.has("sweep") && !c.dem)
+    root.fail("sweep", "grids speed x mass flow through the DEM; this case has no dem: section to run them on");
   if (root.has("sweep")) c.sweep = read_sweep(root.child("sweep", "the operating map of `centrec sweep`: speed x mass flow"));
   if (c.sweep && c.dem)
     if (const auto p = sweep_problem(*c.dem, c.receiver ? &*c.receiver : nullptr, *c.sweep)) root.fail_path(p->key, p->message);

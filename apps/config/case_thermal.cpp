@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "config/case_file.hpp"
 #include "coupling/film_mappings.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/flux_table_csv.hpp"
@@ -24,14 +25,20 @@ std::string resolve_path(const std::string& case_dir, const std::string& p) {
 }
 
 const Range kTemperature = Range::closed(1.0, 5000.0);  // K
+// Values any solid has (CRC Handbook of Chemistry and Physics: conductivity up to diamond's
+// ~2200 W/(m K), down to porous ceramics' ~0.01; density up to osmium's 22,590 kg/m3;
+// specific heat from ~100 (heavy metals) to lithium's 3,580 J/(kg K)), with margin.
+const Range kSolidConductivity = Range::closed(0.01, 2500.0);  // W/(m K)
+const Range kSolidDensity = Range::closed(100.0, 25000.0);     // kg/m3
+const Range kSolidHeatCapacity = Range::closed(50.0, 5000.0);  // J/(kg K)
 
 // The particle's own values (thermal.particle, thermal/particle_data.hpp) are the defaults of
 // k_s, alpha and epsilon; a value given here replaces the nominal one (its range stays the
 // particle's in the error budget).
 th::Material read_material(MapReader r, const th::Material& particle) {
   th::Material m = particle;
-  m.rho_s = r.number("rho_s", m.rho_s, Range::positive(), "kg/m3", "particle (solid) density");
-  m.k_s = r.number("k_s", m.k_s, Range::positive(), "W/(m K)", "solid conductivity of a particle");
+  m.rho_s = r.number("rho_s", m.rho_s, kSolidDensity, "kg/m3", "particle (solid) density");
+  m.k_s = r.number("k_s", m.k_s, kSolidConductivity, "W/(m K)", "solid conductivity of a particle");
   m.alpha = r.number("alpha", m.alpha, Range::closed(0.0, 1.0), "", "solar absorptance of the film");
   m.epsilon = r.number("epsilon", m.epsilon, Range::open_closed(0.0, 1.0), "",
                        "thermal emissivity of the particles and the film surface");
@@ -174,7 +181,7 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
 void read_conductivity(MapReader r, th::FilmModel& m) {
   const std::string model = r.choice("model", "zbs", {"zbs", "constant"},
                                      "bed conductivity: Zehner-Bauer-Schluender with radiation, or a constant k");
-  if (model == "constant") m.conductivity.k_constant = r.required_number("k", Range::positive(), "W/(m K)", "the constant bed conductivity");
+  if (model == "constant") m.conductivity.k_constant = r.required_number("k", Range::closed(1e-3, 2500.0), "W/(m K)", "the constant bed conductivity");
   m.bed.shape_factor = r.number("shape_factor", m.bed.shape_factor, Range::positive(), "",
                                 "ZBS shape factor C_f (1.25 for spheres)");
   m.bed.flattening = r.number("flattening", m.bed.flattening, Range::closed(0.0, 1.0), "",
@@ -301,7 +308,7 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   read_conductivity(t.child("conductivity", "effective conductivity of the film"), m);
   MapReader hc = t.child("heat_capacity", "the particles' specific heat");
   if (hc.choice("model", "particle", {"particle", "constant"}, "c_p(T) of thermal.particle, or a constant") == "constant")
-    m.heat.cp_constant = hc.required_number("cp", Range::positive(), "J/(kg K)", "the constant specific heat");
+    m.heat.cp_constant = hc.required_number("cp", kSolidHeatCapacity, "J/(kg K)", "the constant specific heat");
   hc.finish();
   read_flux(t.child("flux", "the concentrated solar flux"), case_dir, m);
   MapReader rad = t.child("radiation", "radiation exchange of the film (docs/cavity_model.md)");
@@ -431,13 +438,14 @@ std::string case_directory(const std::string& case_path) {
 }
 
 ThermalCase read_thermal_case(const std::string& path) {
-  MapReader root = MapReader::from_file(path);
-  ThermalCase c;
-  c.path = path;
-  c.title = root.string("title", "", "a one-line name of the case, echoed into the outputs");
-  read_thermal_sections(root, case_directory(path), c);
-  root.finish();
-  c.resolved_yaml = root.resolved_text();
+  // The one case reader (validate's), so `thermal` accepts and refuses what `validate` does.
+  const CaseFile cf = read_case_file(path);
+  if (!cf.thermal)
+    throw ConfigError(path + ": no thermal: or film: section: `centrec thermal` solves a film's energy equation");
+  if (cf.thermal->film_source.from_dem())
+    throw ConfigError(path + ": the film comes from the case's DEM: run it with `centrec run` (or give film: {file: ...})");
+  ThermalCase c = *cf.thermal;
+  c.resolved_yaml = cf.resolved_yaml;
   return c;
 }
 

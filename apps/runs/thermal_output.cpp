@@ -1,5 +1,6 @@
 #include "runs/thermal_output.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <sstream>
 
 #include "io/atomic_write.hpp"
+#include "thermal/particle_data.hpp"
 #include "io/code_version.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/h5_file.hpp"
@@ -333,6 +335,12 @@ void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r) {
     std::printf("  solar flux: %.4g W/m2 mean on the film (%.4g m2; open surface: no aperture)\n",
                 mean_flux(b.incident, A_film), A_film);
   auto pct = [P](double x) { return P > 0 ? 100.0 * x / P : 0.0; };
+  const thermal::ParticleData& particle = thermal::particle_data(c.particle);
+  const double T_peak = r.fields.T.empty() ? b.T_out : *std::max_element(r.fields.T.begin(), r.fields.T.end());
+  if (T_peak > particle.T_max || b.T_out > particle.T_max)
+    std::printf("  note: the film reaches %.1f K (outlet %.1f K), above the %.1f K %s's data hold "
+                "(docs/particle_data.md): the properties there are extrapolated\n",
+                T_peak, b.T_out, particle.T_max, c.particle.c_str());
   std::printf("  receiver (%s): aperture %.6g W -> carried %.6g W, efficiency %s (carried / aperture power)\n",
               c.model.cavity.enabled ? "cavity" : "open surface", P, b.carried, efficiency_text(b.efficiency).c_str());
   std::printf("  losses: reflected %.4g W (%.2f %%), emitted %.4g W (%.2f %%) through the %s, convective %.4g W "

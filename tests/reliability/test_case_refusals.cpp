@@ -13,6 +13,7 @@
 
 #include "config/case_checks.hpp"
 #include "config/case_file.hpp"
+#include "config/case_thermal.hpp"
 #include "dem/scene/centrec_scene.hpp"
 #include "dem/scene/packed_film.hpp"
 #include "dem/scene/scene_config.hpp"
@@ -305,6 +306,34 @@ TEST(CaseRefusals, AnInletTemperatureOutsideTheParticlesDataIsRefused) {
                std::string("thermal.T_in: ") + t + " K lies outside the range sg_bauxite's data hold");
   EXPECT_EQ(error_of(with(cavity, "T_in: 873.15", "T_in: 1373.15")), "");
   EXPECT_EQ(error_of(with(cavity, "T_in: 873.15", "T_in: 323.15")), "");
+}
+
+// Property values no solid has ran as physics (k_s, c_p or a constant k of 1e-300 / 1e300);
+// a thermal-only case is read by the one case reader (`thermal` refused a `description:`
+// that `validate` accepted), and a sweep needs a DEM to run its points on.
+TEST(CaseRefusals, ThermalPropertiesNoSolidHasAreRefused) {
+  std::ifstream in(CENTREC_SOURCE_DIR "/cases/thermal_centrec_uniform.yaml");
+  const std::string uniform((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_HAS(error_of(with(uniform, "thermal:\n", "thermal:\n  material: {k_s: 1e-300}\n")),
+             "thermal.material.k_s = 1e-300 is out of the allowed range");
+  EXPECT_HAS(error_of(with(uniform, "thermal:\n", "thermal:\n  material: {rho_s: 1e-300}\n")),
+             "thermal.material.rho_s = 1e-300 is out of the allowed range");
+  EXPECT_HAS(error_of(with(uniform, "thermal:\n", "thermal:\n  heat_capacity: {model: constant, cp: 1e-300}\n")),
+             "thermal.heat_capacity.cp = 1e-300 is out of the allowed range");
+  EXPECT_HAS(error_of(with(uniform, "thermal:\n", "thermal:\n  conductivity: {model: constant, k: 1e300}\n")),
+             "thermal.conductivity.k = 1e+300 is out of the allowed range");
+  EXPECT_EQ(error_of(with(uniform, "thermal:\n", "thermal:\n  heat_capacity: {model: constant, cp: 1200}\n")), "");
+  const std::string dir = temp_dir("thermal_only");
+  const std::string described = write_case(dir, "description: a thermal-only case\n" + uniform);
+  EXPECT_NO_THROW(config::read_thermal_case(described));
+  EXPECT_HAS(error_of(uniform + "sweep: {speed_rpm: [50, 60], mass_flow: [0.3]}\n"),
+             "sweep: grids speed x mass flow through the DEM; this case has no dem: section");
+  try {
+    config::read_thermal_case(write_case(dir, kDem));
+    ADD_FAILURE() << "a DEM-only case was read as a thermal case";
+  } catch (const config::ConfigError& e) {
+    EXPECT_HAS(std::string(e.what()), "no thermal: or film: section");
+  }
 }
 
 TEST(CaseRefusals, EverySweepPointIsCheckedAsItsRunWouldBe) {
