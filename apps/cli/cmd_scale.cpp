@@ -5,12 +5,12 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "config/case_receiver.hpp"
 #include "config/strict_yaml.hpp"
-#include "coupling/scaling_laws.hpp"
 #include "coupling/scaling_laws.hpp"
 #include "io/atomic_write.hpp"
 
@@ -172,6 +172,16 @@ int cmd_scale(const Args& args) {
   act.omega = coupling::rpm_to_rad_per_s(r.get("--speed-rpm", 0));
   act.mass_flow = r.get("--mdot", 0);
   const double target = r.has("--target-diameter") ? r.get("--target-diameter", 0) : r.get("--target-d-over-d", 0) * d;
+  // A drum of 20 particle diameters or less holds no film the DEM can run (its own bound,
+  // config::dem_run_problem), far below the laws' validity (docs/validity_threshold.md).
+  for (const auto& [what, D] : {std::pair<const char*, double>{"the actual receiver", act.diameter},
+                                std::pair<const char*, double>{"the target drum", target}})
+    if (!(D > 20.0 * d)) {
+      char why[200];
+      std::snprintf(why, sizeof why, "%s of D = %.4g m is D/d = %.4g: a drum must exceed 20 particle diameters", what,
+                    D, D / d);
+      throw config::ConfigError(std::string(why) + " (the DEM's bound; the scale-down laws hold from D/d 80)");
+    }
   if (r.has("--film-thickness-d") && r.get("--film-thickness-d", 0) * d >= 0.5 * std::min(act.diameter, target))
     throw config::ConfigError("--film-thickness-d: the film would fill the drum");
   const ReceiverOperatingPoint sim = coupling::scale_to_diameter(act, target);

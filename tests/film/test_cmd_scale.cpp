@@ -164,6 +164,24 @@ TEST(ScaleCommand, ClearErrors) {
   EXPECT_EQ(cmd_scale({"--help"}), 0);
 }
 
+// A drum of 20 particle diameters or less is refused, not scaled (D/d 0.5 was printed with
+// "valid while D >> d").
+TEST(ScaleCommand, RefusesADrumOfTwentyDiametersOrLess) {
+  const std::string in = std::string(CENTREC_SOURCE_DIR) + "/cases/quickstart.yaml";
+  for (const char* x : {"0.5", "20"}) {
+    try {
+      cmd_scale({"--input", in, "--target-d-over-d", x});
+      ADD_FAILURE() << "D/d " << x << " was scaled";
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("the target drum of D = ")), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("a drum must exceed 20 particle diameters"), std::string::npos) << e.what();
+    }
+  }
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(cmd_scale({"--input", in, "--target-d-over-d", "21"}), 0);
+  ::testing::internal::GetCapturedStderr();
+}
+
 // A target below the scale-down laws' validity threshold is warned about (and still scaled:
 // a study may go there); at or above it nothing is said.
 TEST(ScaleCommand, WarnsBelowTheValidityThreshold) {
