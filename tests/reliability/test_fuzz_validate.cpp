@@ -4,6 +4,8 @@
 // refused clearly / accepted / unclear / crash / hang that docs/reliability.md reports.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -207,5 +209,75 @@ TEST(FuzzValidate, MutatedCasesNeverCrashHangOrRefuseVaguely) {
   std::printf("| all | %d | %d | %d | %d | %d | %d |\n", all.tried, all.refused, all.accepted, all.unclear, all.crash,
               all.hang);
   EXPECT_EQ(all.tried, kPerCategory * static_cast<int>(categories.size()));
+  std::filesystem::remove_all(dir);
+}
+
+// The categories of input a held-out probe found accepted as if it were physics, or accepted
+// by `validate` and refused only by the run (docs/reliability.md section 4), each as edits of
+// a shipped case: every one must now be refused clearly by `validate`, naming the line or key.
+TEST(FuzzValidate, TheProbesCategoriesAreRefusedClearly) {
+  const std::string dir = centrec::testing::fresh_dir("fuzz_named");
+  const std::string path = dir + "/case.yaml";
+  auto shipped = [](const std::string& name) { return slurp(CENTREC_SOURCE_DIR "/cases/" + name); };
+  auto edited = [](std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? text : text.replace(at, from.size(), to);
+  };
+  const std::string drum = shipped("drum_dd80/paper_length_loose.yaml"), uniform = shipped("thermal_centrec_uniform.yaml"),
+                    cavity = shipped("thermal_centrec_cavity.yaml"), quick = shipped("quickstart.yaml");
+  struct Probe {
+    const char* category;
+    std::string text;
+  };
+  const std::vector<Probe> probes = {
+      {"no case", ""},
+      {"no case", "   \n\n"},
+      {"no case", "# only a comment\n"},
+      {"no case", quick + "---\ndem: {drum: {diameter: -1}}\n"},
+      {"temperature", edited(cavity, "T_in: 873.15", "T_in: 3000")},
+      {"temperature", edited(cavity, "T_in: 873.15", "T_in: 4500")},
+      {"property", edited(uniform, "thermal:\n", "thermal:\n  material: {k_s: 1e-300}\n")},
+      {"property", edited(uniform, "thermal:\n", "thermal:\n  heat_capacity: {model: constant, cp: 1e-300}\n")},
+      {"property", edited(uniform, "thermal:\n", "thermal:\n  conductivity: {model: constant, k: 1e300}\n")},
+      {"geometry", edited(drum, "dem:\n", "dem:\n  gravity: 0\n")},
+      {"geometry", edited(drum, "particles: 62000}", "particles: 1000, axial_from: 0.5}")},
+      {"geometry", edited(drum, "particles: 62000}", "particles: 2000000}")},
+      {"geometry", edited(quick, "particles: 6750}", "particles: 6750, axial_from: 0.01}")},
+      {"feeder", edited(drum, "radial_height_d: 4", "radial_height_d: 45")},
+      {"feeder", edited(drum, "radial_offset_d: 10", "radial_offset_d: 1")},
+      {"feeder", edited(drum, "angle_deg: 0,", "angle_deg: 0, arc_width_d: 1000,")},
+      {"source run", edited(drum, "particles: 62000}", "from_run: no_such_run}")},
+      {"sweep", uniform + "sweep: {speed_rpm: [50, 60], mass_flow: [0.3]}\n"},
+  };
+  const std::regex clear("case\\.yaml(:[0-9]+: |: [A-Za-z_]+[.:\\[ ]| \\(resolved configuration\\)|: (no such|not a|the case|larger|holds no case))");
+  std::map<std::string, std::array<int, 5>> tally;  // tried, refused clearly, accepted, crash, hang
+  std::vector<std::string> order;
+  for (const Probe& p : probes) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << p.text;
+    const BinaryRun r = run_binary({"validate", path}, 10.0);
+    if (!tally.count(p.category)) order.push_back(p.category);
+    auto& t = tally[p.category];
+    ++t[0];
+    if (r.timed_out) {
+      ++t[4];
+      ADD_FAILURE() << "hang: " << p.text.substr(0, 300);
+    } else if (r.signal != 0) {
+      ++t[3];
+      ADD_FAILURE() << "signal " << r.signal << ": " << p.text.substr(0, 300);
+    } else if (r.exit_code == 0) {
+      ++t[2];
+      ADD_FAILURE() << "accepted (" << p.category << "): " << p.text.substr(0, 600);
+    } else if (r.exit_code == 2 && std::regex_search(r.err, clear) && std::count(r.err.begin(), r.err.end(), '\n') == 1) {
+      ++t[1];
+    } else {
+      ADD_FAILURE() << "unclear refusal (exit " << r.exit_code << "): " << r.err;
+    }
+  }
+  std::printf("| category | tried | refused clearly | accepted | crash | hang |\n|---|---|---|---|---|---|\n");
+  for (const auto& c : order) {
+    const auto& t = tally[c];
+    std::printf("| %s | %d | %d | %d | %d | %d |\n", c.c_str(), t[0], t[1], t[2], t[3], t[4]);
+  }
   std::filesystem::remove_all(dir);
 }
