@@ -8,6 +8,7 @@
 #include "dem/material.hpp"
 #include "dem/scene/centrec_scene.hpp"
 #include "dem/scene/packed_film.hpp"
+#include "dem/scene/size_distribution.hpp"
 #include "dem/sphere_mass.hpp"
 
 namespace centrec::config {
@@ -17,14 +18,6 @@ std::string g(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.4g", v);
   return b;
-}
-
-// The smallest particle radius of the size distribution (normal: cut at 3 sigma).
-double smallest_radius(const dem::scene::ParticleSpec& p) {
-  const double s = p.distribution == dem::scene::SizeDistribution::mono      ? 0.0
-                   : p.distribution == dem::scene::SizeDistribution::uniform ? p.relative_spread
-                                                                             : 3.0 * p.relative_spread;
-  return 0.5 * p.diameter * (1.0 - s);
 }
 }  // namespace
 
@@ -53,7 +46,7 @@ DemCase effective_dem(const DemCase& dem, const ReceiverCase* receiver, const Ov
 dem::TimeStepAdvice dem_time_step_advice(const DemCase& dc) {
   // As dem::Simulation::time_step_advice, over every particle the run can hold.
   const auto& s = dc.scene;
-  double r = smallest_radius(s.particle);
+  double r = 0.5 * dem::scene::SizeSampler(s.particle, 0).min_diameter();
   if (s.rough_wall.enabled) r = std::min(r, 0.5 * s.rough_wall.sphere_diameter);
   const dem::Material& pm = s.particle.material;
   const double m = dem::sphere_mass(pm.density, r);

@@ -1,4 +1,6 @@
 #include "config/case_dem.hpp"
+
+#include "config/case_thermal.hpp"
 #include "config/shared_ranges.hpp"
 
 #include <cmath>
@@ -213,6 +215,12 @@ DemCase read_dem_case(MapReader root) {
 
   root.finish();
   return c;
+}
+
+std::string settled_start_dir(const std::string& case_path, const DemCase& dc) {
+  const std::string& dir = dc.initial_film_from_run;
+  const std::string case_dir = case_directory(case_path);
+  return !dir.empty() && dir[0] != '/' && !case_dir.empty() ? case_dir + "/" + dir : dir;
 }
 
 }  // namespace centrec::config

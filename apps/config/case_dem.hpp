@@ -34,5 +34,8 @@ struct DemCase {
 
 // Reads `dem` (a child mapping of the case root); strict: unknown keys are errors.
 DemCase read_dem_case(MapReader dem);
+// The folder of a settled start's source run (dem.initial_film.from_run), relative to the
+// case file's folder unless absolute.
+std::string settled_start_dir(const std::string& case_path, const DemCase& dc);
 
 }  // namespace centrec::config

@@ -62,9 +62,7 @@ CaseFile read_case_file(const std::string& path) {
   // checkpoint's resolved configuration is read again after its source may have gone: a
   // resume does not need it).
   if (c.dem && !c.dem->initial_film_from_run.empty()) {
-    std::string dir = c.dem->initial_film_from_run;
-    const std::string case_dir = case_directory(path);
-    if (dir[0] != '/' && !case_dir.empty()) dir = case_dir + "/" + dir;
+    const std::string dir = settled_start_dir(path, *c.dem);
     if (!std::filesystem::is_regular_file(dir + "/checkpoint.h5"))
       root.fail_path("dem.initial_film.from_run", "no run to start from: " + dir +
                                                       "/checkpoint.h5 does not exist (run that case first, into "

@@ -23,9 +23,7 @@ config::CaseFile drum_case_of(const io::RunCheckpoint& ck) {
 }
 
 dem::scene::InitialFilmSpec settled_start(const config::CaseFile& cf, const config::DemCase& dc) {
-  std::string dir = dc.initial_film_from_run;
-  const std::string case_dir = config::case_directory(cf.path);
-  if (!dir.empty() && dir[0] != '/' && !case_dir.empty()) dir = case_dir + "/" + dir;
+  const std::string dir = config::settled_start_dir(cf.path, dc);
   try {
     const io::RunCheckpoint ck = io::read_checkpoint(dir);
     const config::CaseFile source = drum_case_of(ck);

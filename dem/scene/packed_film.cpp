@@ -88,15 +88,12 @@ std::vector<double> loose_film_radii(const SceneConfig& c) {
 std::size_t loose_film_capacity(const SceneConfig& c, std::size_t count) {
   const LooseFilmRegion g = loose_film_region(c);
   auto capacity = [&](double dmax) { return packed_film_capacity(dmax, g.R, g.inset, g.z0, g.z1, g.periodic); };
-  const ParticleSpec& p = c.particle;
-  const double spread = p.distribution == SizeDistribution::mono      ? 0.0
-                        : p.distribution == SizeDistribution::uniform ? p.relative_spread
-                                                                      : 3.0 * p.relative_spread;
   // The lattice's pitch follows the largest sphere drawn: bounded by the distribution's
   // extremes, so the draw is needed only between them.
-  const std::size_t least = capacity(SizeSampler(p, c.seed + 1).max_diameter());
-  if (count <= least || spread == 0.0) return least;
-  const std::size_t most = capacity(p.diameter * (1.0 - spread));
+  const SizeSampler sizes(c.particle, c.seed + 1);
+  const std::size_t least = capacity(sizes.max_diameter());
+  if (count <= least || c.particle.distribution == SizeDistribution::mono) return least;
+  const std::size_t most = capacity(sizes.min_diameter());
   if (count > most) return most;
   const std::vector<double> radii = loose_film_radii(c);
   return capacity(2.0 * *std::max_element(radii.begin(), radii.end()));

@@ -26,6 +26,15 @@ double SizeSampler::max_diameter() const {
   return spec_.diameter;
 }
 
+double SizeSampler::min_diameter() const {
+  switch (spec_.distribution) {
+    case SizeDistribution::mono: return spec_.diameter;
+    case SizeDistribution::uniform: return spec_.diameter * (1.0 - spec_.relative_spread);
+    case SizeDistribution::normal: return spec_.diameter * (1.0 - 3.0 * spec_.relative_spread);
+  }
+  return spec_.diameter;
+}
+
 double SizeSampler::next_diameter() {
   const double d = spec_.diameter, s = spec_.relative_spread;
   switch (spec_.distribution) {

@@ -12,6 +12,7 @@ class SizeSampler {
   SizeSampler(const ParticleSpec& spec, std::uint64_t seed);
   double next_diameter();
   double max_diameter() const;
+  double min_diameter() const;  // the distribution's smallest (normal: cut at 3 sigma)
   // The generator's state as text (std::mt19937_64 stream format), for checkpoints.
   std::string rng_state() const;
   void set_rng_state(const std::string& text);  // throws std::invalid_argument if unreadable

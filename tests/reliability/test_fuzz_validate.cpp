@@ -52,6 +52,14 @@ std::vector<std::size_t> content_lines(const std::vector<std::string>& v) {
   return idx;
 }
 
+// A clear refusal of case.yaml names the file and a line, or the file and a key path.
+bool refused_clearly(const BinaryRun& r) {
+  static const std::regex clear(
+      "case\\.yaml(:[0-9]+: |: [A-Za-z_]+[.:\\[ ]| \\(resolved configuration\\)|: (no such|not a|the case|larger|holds "
+      "no case))");
+  return r.exit_code == 2 && std::regex_search(r.err, clear) && std::count(r.err.begin(), r.err.end(), '\n') == 1;
+}
+
 struct Mutator {
   std::mt19937_64 rng;
   std::size_t pick(std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); }
@@ -166,8 +174,6 @@ TEST(FuzzValidate, MutatedCasesNeverCrashHangOrRefuseVaguely) {
   std::map<std::string, Tally> tally;
   Mutator m{std::mt19937_64(20261202)};
   const std::string path = dir + "/case.yaml";
-  // A clear refusal names the file and a line, or the file and a key path.
-  const std::regex clear("case\\.yaml(:[0-9]+: |: [A-Za-z_]+[.:\\[ ]| \\(resolved configuration\\)|: (no such|not a|the case|larger))");
   for (const auto& cat : categories) {
     for (int k = 0; k < kPerCategory; ++k) {
       const std::size_t which = m.pick(texts.size());
@@ -186,8 +192,7 @@ TEST(FuzzValidate, MutatedCasesNeverCrashHangOrRefuseVaguely) {
       } else if (r.exit_code == 0) {
         ++t.accepted;
         if (cat == "yaml") ADD_FAILURE() << "accepted as a case:\n" << text.substr(0, 400);
-      } else if (std::regex_search(r.err, clear) && r.exit_code == 2 &&
-                 std::count(r.err.begin(), r.err.end(), '\n') == 1) {
+      } else if (refused_clearly(r)) {
         ++t.refused;
       } else {
         ++t.unclear;
@@ -250,7 +255,6 @@ TEST(FuzzValidate, TheProbesCategoriesAreRefusedClearly) {
       {"source run", edited(drum, "particles: 62000}", "from_run: no_such_run}")},
       {"sweep", uniform + "sweep: {speed_rpm: [50, 60], mass_flow: [0.3]}\n"},
   };
-  const std::regex clear("case\\.yaml(:[0-9]+: |: [A-Za-z_]+[.:\\[ ]| \\(resolved configuration\\)|: (no such|not a|the case|larger|holds no case))");
   std::map<std::string, std::array<int, 5>> tally;  // tried, refused clearly, accepted, crash, hang
   std::vector<std::string> order;
   for (const Probe& p : probes) {
@@ -268,7 +272,7 @@ TEST(FuzzValidate, TheProbesCategoriesAreRefusedClearly) {
     } else if (r.exit_code == 0) {
       ++t[2];
       ADD_FAILURE() << "accepted (" << p.category << "): " << p.text.substr(0, 600);
-    } else if (r.exit_code == 2 && std::regex_search(r.err, clear) && std::count(r.err.begin(), r.err.end(), '\n') == 1) {
+    } else if (refused_clearly(r)) {
       ++t[1];
     } else {
       ADD_FAILURE() << "unclear refusal (exit " << r.exit_code << "): " << r.err;
