@@ -20,6 +20,7 @@ const std::vector<Command>& commands() {
       {"scale", "scale a receiver to another size by the paper's eqs 1-3 (keeps omega^2 R, mdot/R, L/R)", cmd_scale},
       {"thermal", "solve the film energy equation under solar flux: T_out, efficiency, k_eff", cmd_thermal},
       {"budget", "error budget: the inputs' stated uncertainties propagated to T_out, efficiency, k_eff", cmd_budget},
+      {"paths", "a fed drum's residence times and its particles heated along their own paths", cmd_paths},
       {"sweep", "operating map: coupled runs over speed x mass flow in parallel processes", cmd_sweep},
       {"validate", "check a YAML case and print its fully resolved configuration", cmd_validate},
       {"keys", "print every case-file key with type, default, range, unit and meaning (Markdown)", cmd_keys},

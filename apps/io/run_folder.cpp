@@ -20,7 +20,7 @@ namespace {
 // holds a run.
 const char* const kRunFiles[] = {"summary.json",  "dem.h5",     "dem.xmf",     "drum.xmf", "mass_flow.csv",
                                  "checkpoint.h5", "results.h5", "results.xmf", "film.h5",  "thermal.h5",
-                                 "thermal.xmf",   "sweep.json", "sweep.csv"};
+                                 "thermal.xmf",   "sweep.json", "sweep.csv", "tracks", "paths.csv"};
 
 bool alive(long pid) { return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM); }
 
@@ -90,7 +90,7 @@ RunFolderClaim::RunFolderClaim(const std::string& dir, const std::string& comman
       throw std::invalid_argument(dir + " holds the results of an earlier run (" + joined(files) +
                                   "): give another --out, or --overwrite to replace them");
     }
-    for (const auto& f : files) fs::remove(fs::path(dir) / f);  // overwrite: none of the old run's files stay
+    for (const auto& f : files) fs::remove_all(fs::path(dir) / f);  // overwrite: none of the old run's files stay
   } catch (...) {
     ::unlink(lock_.c_str());
     lock_.clear();

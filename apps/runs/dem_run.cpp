@@ -86,6 +86,7 @@ DemRun::DemRun(const config::CaseFile& cf, const config::DemCase& dc, const std:
       wall_before_(ck ? ck->wall_time : 0.0),
       progress_(dc.run.duration + dc.sampling.turns * period_, dc.run.progress_interval),
       sampler_(scene_, dc.sampling.sampler),
+      tracks_(dc.scene.feeder.enabled && !dc.scene.slice.enabled),
       sampled_(ck ? ck->sampled_turns : 0),
       in_turn_(ck ? ck->turn_snapshots : 0),
       checkpoint_at_(std::chrono::steady_clock::now()) {
@@ -144,6 +145,7 @@ void DemRun::checkpoint(Phase phase, bool force) {
   c.wall_time = wall_before_ + progress_.elapsed();
   c.scene = scene_.export_state();
   if (phase != Phase::spin_up) {
+    flush_tracks();  // before the checkpoint that counts them
     c.sampler["state"] = sampler_.save();
     c.start_snapshot = snapshots_.front().data;
   }
@@ -177,6 +179,12 @@ void DemRun::keep(const dem::scene::SnapshotArrays& s, bool with_glued) {
   char name[32];
   std::snprintf(name, sizeof name, "t%.6f", s.time);
   snapshots_.push_back({name, s, with_glued ? glued_layer(sim_) : dem::scene::SnapshotArrays{}});
+}
+
+void DemRun::flush_tracks() {
+  io::write_track_part(out_dir_, track_first_, tracks_pending_);
+  track_first_ += static_cast<std::int64_t>(tracks_pending_.size());
+  tracks_pending_.clear();
 }
 
 void DemRun::spin_up() {
@@ -230,6 +238,10 @@ void DemRun::start_sampling() {
   per_turn_ = sampler_.spec().snapshots_per_turn;
   stride_ = io::snapshot_stride(turns_ * per_turn_, static_cast<double>(sim_.size()));
   taken_ = sampled_ * per_turn_ + in_turn_;  // sampled snapshots so far, counted from the start of sampling
+  if (tracks_) {  // parts past the checkpoint resumed from are taken again
+    io::drop_track_parts_from(out_dir_, taken_);
+    track_first_ = taken_;
+  }
   // The run ends when the snapshots still to take are taken, from wherever the sampling
   // starts or resumes (after an extended spin-up, inside a turn).
   const int to_take = std::max(0, turns_ * per_turn_ - taken_);
@@ -249,6 +261,7 @@ void DemRun::sample_turn() {
   for (; in_turn_ < per_turn_;) {
     advance([&] { sampler_.advance_interval(scene_); });
     dem::scene::SnapshotArrays s = dem::scene::take_snapshot(sim_);
+    if (tracks_) tracks_pending_.push_back(film::track_snapshot(s));
     if (++taken_ % stride_ == 0) keep(s, true);
     sampler_.add_snapshot(std::move(s));
     if (++in_turn_ == per_turn_) break;  // the turn's end is the caller's fixed point
@@ -261,6 +274,7 @@ void DemRun::sample_turn() {
 }
 
 io::DemRunResult DemRun::done() {
+  flush_tracks();
   if (sim_.time() > snapshots_.back().data.time) keep(dem::scene::take_snapshot(sim_), true);
   progress_.update(sim_.time(), sim_.time() / period_, particle_steps_, true, [this] { return flows(); });
   progress_.finish();

@@ -21,6 +21,7 @@
 #include "dem/scene/scene_sampler.hpp"
 #include "io/checkpoint_h5.hpp"
 #include "io/dem_run_result.hpp"
+#include "io/particle_tracks_h5.hpp"
 #include "runs/interrupt.hpp"
 #include "runs/progress_meter.hpp"
 
@@ -56,6 +57,8 @@ class DemRun {
   void checkpoint(Phase phase, bool force);
   // The snapshot `s` kept for dem.h5 and dem.xmf, with the glued layer as it is now.
   void keep(const dem::scene::SnapshotArrays& s, bool with_glued);
+  // The tracks not yet on disk written as one part (io/particle_tracks_h5.hpp).
+  void flush_tracks();
   // The flow over the last turn, for the progress lines.
   std::string flows() const;
   // The engine's and the scene's phase timers together (what the samplers' time excludes).
@@ -78,6 +81,11 @@ class DemRun {
   double sampling_seconds_ = 0.0, checkpoint_seconds_ = 0.0;  // the samplers' own work, checkpoint writes
   dem::scene::SceneSampler sampler_;
   std::vector<io::NamedSnapshot> snapshots_;
+  // A fed drum's particle tracks: every sampled snapshot's, written at each checkpoint and
+  // at the end; track_first_ is the index of the first one not yet on disk.
+  const bool tracks_;
+  std::vector<io::TrackSnapshot> tracks_pending_;
+  std::int64_t track_first_ = 0;
   int sampled_, in_turn_;  // whole sampled turns, snapshots taken into the unfinished one
   int turns_ = 0, per_turn_ = 0, stride_ = 1, taken_ = 0;  // set as the sampling starts
   std::chrono::steady_clock::time_point checkpoint_at_;

@@ -1,6 +1,8 @@
 #include "runs/earlier_dem_run.hpp"
 
 #include <filesystem>
+#include <cstdlib>
+#include <iterator>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -18,8 +20,18 @@ nlohmann::json earlier_dem_run_summary(const std::string& case_resolved_yaml, co
   nlohmann::json summary = io::read_json_file(dir + "/summary.json");
   if (!summary.contains("resolved_config") || !summary["resolved_config"].is_string())
     throw std::invalid_argument(dir + "/summary.json has no resolved_config: not a `centrec dem` run's summary");
-  const auto mine = dem_input_values(case_resolved_yaml, {"dem", "receiver"}),
-             theirs = dem_input_values(summary["resolved_config"].get<std::string>(), {"dem", "receiver"});
+  auto mine = dem_input_values(case_resolved_yaml, {"dem", "receiver"}),
+       theirs = dem_input_values(summary["resolved_config"].get<std::string>(), {"dem", "receiver"});
+  // A receiver enters the DEM only when it derives the DEM drum (receiver.dem_diameter_d > 0,
+  // docs/scaling.md); otherwise it scales the thermal film only, so a drum run without one
+  // serves a case that scales it up.
+  auto derives = [](const std::map<std::string, std::string>& m) {
+    const auto it = m.find("receiver.dem_diameter_d");
+    return it != m.end() && std::strtod(it->second.c_str(), nullptr) > 0.0;
+  };
+  if (!derives(mine) && !derives(theirs))
+    for (auto* m : {&mine, &theirs})
+      for (auto it = m->begin(); it != m->end();) it = it->first.rfind("receiver.", 0) == 0 ? m->erase(it) : std::next(it);
   std::string differ;
   auto value = [](const std::map<std::string, std::string>& m, const std::string& k) {
     const auto it = m.find(k);

@@ -28,6 +28,7 @@
 #include "runs/coupled_output.hpp"
 #include "runs/coupled_run.hpp"
 #include "runs/dem_cache.hpp"
+#include "runs/earlier_dem_run.hpp"
 #include "runs/provenance.hpp"
 
 using namespace centrec;
@@ -259,4 +260,25 @@ TEST(CoupledRun, ThermalParticlesMustMatchTheDem) {
   }
   EXPECT_FALSE(fs::exists(dir + "/cache"));  // refused before any DEM work
   fs::remove_all(dir);
+}
+
+TEST(CoupledRun, AReceiverThatDoesNotDeriveTheDemIsNotADemInput) {
+  // A drum run without a receiver serves a case that only scales its film up (receiver with
+  // dem_diameter_d 0); one that derives the DEM drum from the receiver is another DEM.
+  const std::string dir = centrec::testing::fresh_dir("dem_from_receiver");
+  const std::string dem = "dem:\n  drum: {diameter: 0.096, length: 0.1368, speed_rpm: 178.975}\n  seed: 12345\n";
+  std::ofstream(dir + "/dem.h5") << "";
+  nlohmann::json summary;
+  summary["resolved_config"] = "title: drum\n" + dem;
+  std::ofstream(dir + "/summary.json") << summary.dump();
+  const std::string receiver = "receiver: {diameter: 0.12, length: 0.171, speed_rpm: 160.08, mass_flow: 0.0357";
+  EXPECT_NO_THROW(centrec::runs::earlier_dem_run_summary("title: scaled\n" + receiver + ", dem_diameter_d: 0}\n" + dem, dir));
+  try {
+    centrec::runs::earlier_dem_run_summary("title: derived\n" + receiver + ", dem_diameter_d: 80}\n" + dem, dir);
+    ADD_FAILURE() << "a DEM derived from the receiver was taken for a run without one";
+  } catch (const std::invalid_argument& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("receiver.dem_diameter_d: 80 here, (absent) in that run"), std::string::npos);
+  }
+  std::filesystem::remove_all(dir);
 }
