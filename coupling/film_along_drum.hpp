@@ -19,5 +19,10 @@ std::vector<std::size_t> sections_past_feeder(const DemFilmAverages& a);
 // As a row of film_mappings(): the figures film_solid_fraction_cut and first_section_z_m,
 // per section film_thickness (m) and flow_within_film_share.
 FilmMappingResult map_film_along_drum(const DemFilmAverages& a);
+// The same sections with each film's top where it carries kCarriedFlowShare of the section's
+// flow (FilmTop::carried_flow): the sparse fast particles over the film inside it, as
+// measured (phi and u of every bin up to there). Figures film_carried_flow_share and
+// first_section_z_m.
+FilmMappingResult map_film_along_drum_carried_flow(const DemFilmAverages& a);
 
 }  // namespace centrec::coupling

@@ -87,29 +87,49 @@ MappedFilm map_dem_sections(const DemFilmAverages& a, const std::vector<std::siz
       u[k] = p > 0.0 ? std::max(0.0, a.ring_flux[i][k] / p) : 0.0;
       u_sd[k] = p > 0.0 ? a.ring_flux_std[i][k] / p : 0.0;
     }
-    // The film: bins from the wall up with phi >= phi_cut, without a gap.
-    std::size_t top = 0;
-    while (top < nb && phi[top] >= phi_cut) ++top;
-    if (top == 0)
-      throw std::invalid_argument("film mapping: no film at z = " + std::to_string(a.ring_z[i]) +
-                                  " m (solid fraction of the first bin " + std::to_string(phi[0]) + " < " +
-                                  std::to_string(phi_cut) + ")");
-    double t = static_cast<double>(top) * w;
-    // The first bin below the cut is kept as measured when the film ends where the profile,
-    // linear between bin centres, crosses phi_cut; the points above it hold its values.
-    std::size_t held_from = top;
-    if (top_at == FilmTop::at_crossing && top < nb) {
-      t = f.eta[top] + (phi[top - 1] - phi_cut) / (phi[top - 1] - phi[top]) * w;  // phi[top - 1] >= cut > phi[top]
-      held_from = top + 1;
-    }
-    double within = 0.0, all = 0.0;
+    // Each bin's share of the section's flow (cylindrical: u phi (R - eta)).
+    std::vector<double> flow(nb);
+    double all = 0.0;
     for (std::size_t k = 0; k < nb; ++k) {
-      const double flow = a.ring_flux[i][k] * (R - a.wall_distance_d[k] * d);
-      all += flow;
+      flow[k] = a.ring_flux[i][k] * (R - a.wall_distance_d[k] * d);
+      all += flow[k];
+    }
+    double t = 0.0;
+    std::size_t held_from = 0;  // the points from here up hold the film's top values
+    if (top_at == FilmTop::carried_flow) {
+      // The top where the flow counted from the wall, uniform within a bin, reaches the
+      // share; the bin it lies in is kept as measured.
+      if (!(all > 0.0))
+        throw std::invalid_argument("film mapping: no flow at z = " + std::to_string(a.ring_z[i]) + " m");
+      const double target = kCarriedFlowShare * all;
+      double below = 0.0;
+      std::size_t k = 0;
+      while (k + 1 < nb && below + std::max(0.0, flow[k]) < target) below += std::max(0.0, flow[k++]);
+      t = (static_cast<double>(k) + std::clamp((target - below) / std::max(flow[k], 1e-300), 0.0, 1.0)) * w;
+      held_from = k + 1;
+    } else {
+      // The film: bins from the wall up with phi >= phi_cut, without a gap.
+      std::size_t top = 0;
+      while (top < nb && phi[top] >= phi_cut) ++top;
+      if (top == 0)
+        throw std::invalid_argument("film mapping: no film at z = " + std::to_string(a.ring_z[i]) +
+                                    " m (solid fraction of the first bin " + std::to_string(phi[0]) + " < " +
+                                    std::to_string(phi_cut) + ")");
+      t = static_cast<double>(top) * w;
+      held_from = top;
+      // The first bin below the cut is kept as measured when the film ends where the
+      // profile, linear between bin centres, crosses phi_cut.
+      if (top_at == FilmTop::at_crossing && top < nb) {
+        t = f.eta[top] + (phi[top - 1] - phi_cut) / (phi[top - 1] - phi[top]) * w;  // phi[top - 1] >= cut > phi[top]
+        held_from = top + 1;
+      }
+    }
+    double within = 0.0;
+    for (std::size_t k = 0; k < nb; ++k) {
       if (top_at == FilmTop::whole_bins)
-        within += k < top ? flow : 0.0;
+        within += k < held_from ? flow[k] : 0.0;
       else  // the part of bin k (k w to (k + 1) w from the wall) below the film's top
-        within += flow * std::clamp((t - static_cast<double>(k) * w) / w, 0.0, 1.0);
+        within += flow[k] * std::clamp((t - static_cast<double>(k) * w) / w, 0.0, 1.0);
     }
     // Above the film the thermal model reads nothing (FilmField ignores eta > t); the points
     // there hold the film's top values so the field stays a valid film everywhere.

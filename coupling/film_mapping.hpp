@@ -41,13 +41,19 @@ struct MappedFilm {
 
 // Where a section's film ends: at the top of its last bin with phi >= phi_cut (whole bins),
 // or where the profile, linear between bin centres, crosses phi_cut (continuous in the
-// profile: a film does not jump by a bin when its top bin's phi passes the cut).
-enum class FilmTop { whole_bins, at_crossing };
+// profile: a film does not jump by a bin when its top bin's phi passes the cut), or where the
+// flow counted from the wall (uniform within a bin) reaches kCarriedFlowShare of the
+// section's flow: the sparse, fast particles over a fed drum's film carry 15-65 % of its
+// flow above phi 0.1 (docs/coupling.md "Film along the drum").
+enum class FilmTop { whole_bins, at_crossing, carried_flow };
+// The share of a section's measured flow inside a film whose top is set by the carried flow.
+constexpr double kCarriedFlowShare = 0.995;
 
 // The developed sections (a slice: its one section), whole bins. Throws
 // std::invalid_argument naming the problem (empty film, no flow, ...).
 MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut = kFilmSolidFractionCut);
-// The given sections (indices into a.ring_z, increasing), cut as top_at says.
+// The given sections (indices into a.ring_z, increasing), cut as top_at says (phi_cut unused
+// for carried_flow).
 MappedFilm map_dem_sections(const DemFilmAverages& a, const std::vector<std::size_t>& sections, double phi_cut,
                             FilmTop top_at);
 

@@ -29,6 +29,11 @@ const std::vector<FilmMappingEntry>& film_mappings() {
        "a fed drum's film section by section along z from the feeder's end to the outlet, each section's own "
        "profiles, cut where the solid fraction crosses 0.1 (docs/coupling.md \"Film along the drum\")",
        map_film_along_drum},
+      {"along_drum_carried_flow",
+       "as along_drum, each section's film reaching up to where it carries 99.5 % of the section's flow: the sparse, "
+       "fast particles over the film (a fed drum's feed stream) inside it, as measured (docs/coupling.md \"Film along "
+       "the drum\")",
+       map_film_along_drum_carried_flow},
   };
   return table;
 }

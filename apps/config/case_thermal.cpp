@@ -269,8 +269,9 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
       c.film_source.kind = FilmSource::Kind::dem;
       c.film_source.mapping = f.choice("mapping", names.front(), names,
                                        "how the DEM's film becomes the thermal film (docs/coupling.md): as_measured "
-                                       "(the developed sections; a slice's one) or along_drum (a fed drum, section by "
-                                       "section past the feeder)");
+                                       "(the developed sections; a slice's one), along_drum (a fed drum, section by "
+                                       "section past the feeder, cut at phi 0.1) or along_drum_carried_flow (the same "
+                                       "sections up to where they carry 99.5 % of their flow)");
       f.finish();
     } else {
       read_film(f, case_dir, m.material.d, c);

@@ -295,3 +295,45 @@ TEST(FilmAlongDrum, RefusesASliceAndADrumWithNoSectionPastItsFeeder) {
     EXPECT_NE(std::string(e.what()).find("as_measured"), std::string::npos);
   }
 }
+
+TEST(FilmAlongDrum, TheCarriedFlowTopHoldsTheShareAndTheSparseStreamAbove) {
+  // A sparse fast stream over the synthetic film: bins 10-13 (5.0-7.0 d) at phi 0.01 moving
+  // at 3 m/s. The film's top by the cut stays at the dense film's; by the carried flow it lies
+  // where the flow counted from the wall (uniform within a bin) reaches 99.5 % of the section's.
+  auto a = test::synthetic_dem_film(0.12);
+  const std::size_t s = 3;
+  for (std::size_t k = 10; k < 14; ++k) {
+    a.ring_phi[s][k] = 0.01;
+    a.ring_flux[s][k] = 0.01 * 3.0;
+  }
+  const double d = a.particle_diameter, w = 0.5 * d, R = a.drum_radius;
+  std::vector<double> F(a.wall_distance_d.size());
+  double all = 0.0;
+  for (std::size_t k = 0; k < F.size(); ++k) all += F[k] = a.ring_flux[s][k] * (R - a.wall_distance_d[k] * d);
+  // The edge by hand: the bin where the running sum passes the share, and the part of it.
+  const double target = coupling::kCarriedFlowShare * all;
+  double below = 0.0, expect = 0.0;
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    if (below + F[k] >= target) {
+      expect = (static_cast<double>(k) + (target - below) / F[k]) * w;
+      break;
+    }
+    below += F[k];
+  }
+  const auto by_flow = coupling::map_dem_sections(a, {s}, 0.1, coupling::FilmTop::carried_flow);
+  const auto by_cut = coupling::map_dem_sections(a, {s}, 0.1, coupling::FilmTop::at_crossing);
+  double cut_share = 0.0;
+  for (std::size_t k = 0; k < 10; ++k) cut_share += F[k];
+  std::printf("sparse stream over the film: top by the cut %.4f d (%.1f %% of the flow inside), by the carried flow "
+              "%.4f d (expected %.4f d, %.2f %% inside)\n",
+              by_cut.film.t[0] / d, 100.0 * by_cut.cut.flow_within_share[0], by_flow.film.t[0] / d, expect / d,
+              100.0 * by_flow.cut.flow_within_share[0]);
+  EXPECT_NEAR(by_flow.film.t[0], expect, 1e-12);
+  EXPECT_GT(by_flow.film.t[0], 5.0 * d);  // the stream is inside
+  EXPECT_NEAR(by_flow.cut.flow_within_share[0], coupling::kCarriedFlowShare, 1e-12);
+  EXPECT_LT(by_cut.cut.flow_within_share[0], 0.9);  // the cut leaves the stream out
+  // Inside, the stream is as measured: u = flux / phi = 3 m/s in its bins.
+  EXPECT_NEAR(by_flow.film.sample(by_flow.film.u, by_flow.film.z[0], 5.75 * d), 3.0, 1e-12);
+  const coupling::FilmMappingResult r = coupling::film_mapping("along_drum_carried_flow").map(a);
+  EXPECT_DOUBLE_EQ(r.report.figure("film_carried_flow_share"), coupling::kCarriedFlowShare);
+}
