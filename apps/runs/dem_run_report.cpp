@@ -12,15 +12,16 @@
 #include "io/atomic_write.hpp"
 #include "io/code_version.hpp"
 #include "io/dem_output_h5.hpp"
-#include "runs/provenance.hpp"
 #include "io/summary_json.hpp"
+#include "runs/provenance.hpp"
 
 namespace centrec::runs {
 
 namespace {
 
 // Steady state of the fed drum from the per-interval inlet and outlet flows of the log.
-film::SteadyStateResult steady_state(const std::vector<dem::scene::MassFlowSample>& log, double window, double tolerance) {
+film::SteadyStateResult steady_state(const std::vector<dem::scene::MassFlowSample>& log, double window,
+                                     double tolerance) {
   std::vector<double> t, in, out;
   for (std::size_t k = 1; k < log.size(); ++k) {
     const double h = log[k].time - log[k - 1].time;
@@ -33,6 +34,38 @@ film::SteadyStateResult steady_state(const std::vector<dem::scene::MassFlowSampl
   crit.window = window;
   crit.tolerance = tolerance;
   return film::find_steady_state(t.data(), in.data(), out.data(), t.size(), crit);
+}
+
+// What a user of this DEM run must know before taking its film (summary.json "warnings",
+// and stderr): a flow that is not steady, a feeder that delivered less than asked, a spin-up
+// that ran past run.duration.
+std::vector<std::string> dem_run_warnings(const config::DemCase& dc, const io::DemRunResult& r) {
+  std::vector<std::string> w;
+  const double period = dem::scene::turn_period(dc.scene), window = dc.run.flow_window_turns * period;
+  const auto steady = dem::scene::flow_steadiness(r.mass_flow, dc.scene, window, dc.run.steady_tolerance);
+  char b[320];
+  if (!steady.steady) {
+    std::snprintf(b, sizeof b, "the flow is not steady over the last %.3g s (", window);
+    w.push_back(b + steady.describe() + "): a coupled run refuses this film without --allow-unsteady");
+  }
+  const auto flows = dem::scene::window_flows(r.mass_flow, window);
+  const double asked = dc.scene.feeder.mass_flow;
+  if (dc.scene.feeder.enabled && !dc.scene.slice.enabled && r.feeder_deferred > 0 && flows.fed < 0.9 * asked) {
+    std::snprintf(b, sizeof b,
+                  "the feeder delivered %.4g g/s of the %.4g g/s asked (%lld insertions deferred: its region was "
+                  "full); enlarge dem.feeder's region or lower the mass flow",
+                  flows.fed * 1e3, asked * 1e3, static_cast<long long>(r.feeder_deferred));
+    w.push_back(b);
+  }
+  const double spin_up = r.simulated_time - static_cast<double>(r.fields.turns) * period;
+  if (spin_up > dc.run.duration + 0.01 * period) {
+    std::snprintf(b, sizeof b,
+                  "the spin-up ran %.4g s, past run.duration (%.4g s), until the flow was steady or run.max_extension "
+                  "was spent; then %zu sampled turns: run.duration (--duration) is the shortest spin-up, not a limit",
+                  spin_up, dc.run.duration, r.fields.turns);
+    w.push_back(b);
+  }
+  return w;
 }
 
 nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, const io::DemRunResult& r) {
@@ -72,8 +105,10 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
   // run may use.
   const auto steady = dem::scene::flow_steadiness(log, dc.scene, window, dc.run.steady_tolerance);
   j["steady_state"] = steady.steady;
-  j["steady_flow_error"] = std::isfinite(steady.flow_error) ? nlohmann::json(steady.flow_error) : nlohmann::json(nullptr);
-  j["steady_holdup_drift"] = std::isfinite(steady.holdup_drift) ? nlohmann::json(steady.holdup_drift) : nlohmann::json(nullptr);
+  j["steady_flow_error"] =
+      std::isfinite(steady.flow_error) ? nlohmann::json(steady.flow_error) : nlohmann::json(nullptr);
+  j["steady_holdup_drift"] =
+      std::isfinite(steady.holdup_drift) ? nlohmann::json(steady.holdup_drift) : nlohmann::json(nullptr);
   j["steady_tolerance"] = dc.run.steady_tolerance;
   j["steady_state_text"] = steady.describe();
   if (fed && log.size() > 2) {
@@ -86,11 +121,13 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
     j["slice_target_mdot_kg_s"] = dc.scene.slice.target_mass_flow;
     nlohmann::json windows = nlohmann::json::array();
     for (const auto& w : r.controller)
-      windows.push_back({{"time_s", w.time}, {"mdot_kg_s", w.mass_flow}, {"particles", w.particles}, {"change", w.change}});
+      windows.push_back(
+          {{"time_s", w.time}, {"mdot_kg_s", w.mass_flow}, {"particles", w.particles}, {"change", w.change}});
     j["controller_windows"] = windows;
   }
   j["lost_kg"] = log.empty() ? 0.0 : log.back().lost;
-  j["feeder_deferred_insertions"] = r.feeder_deferred >= 0 ? nlohmann::json(r.feeder_deferred) : nlohmann::json(nullptr);
+  j["feeder_deferred_insertions"] =
+      r.feeder_deferred >= 0 ? nlohmann::json(r.feeder_deferred) : nlohmann::json(nullptr);
   j["contacts_per_particle"] =
       r.contacts_per_particle >= 0.0 ? nlohmann::json(r.contacts_per_particle) : nlohmann::json(nullptr);
   j["particle_steps_per_s"] = r.wall_time > 0.0 ? r.particle_steps / r.wall_time : 0.0;
@@ -119,6 +156,7 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
     j["theta_convention"] =
         "theta increases against the drum rotation; 90 deg = top (opposite gravity's transverse part)";
   }
+  j["warnings"] = dem_run_warnings(dc, r);
   j["resolved_config"] = cf.resolved_yaml;
   return j;
 }
@@ -126,7 +164,8 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
 std::string mass_flow_csv(const std::vector<dem::scene::MassFlowSample>& log) {
   std::ostringstream csv;
   // One header line of column names (pandas.read_csv reads it as is); masses are cumulative.
-  csv << "time_s,fed_cumulative_kg,out_cumulative_kg,lost_cumulative_kg,holdup_kg,free_particles,slice_axial_flow_kg_s\n";
+  csv << "time_s,fed_cumulative_kg,out_cumulative_kg,lost_cumulative_kg,holdup_kg,free_particles,slice_axial_flow_kg_"
+         "s\n";
   for (const auto& s : log)
     csv << s.time << ',' << s.fed << ',' << s.out << ',' << s.lost << ',' << s.holdup << ',' << s.particles << ','
         << s.axial_flow << '\n';
@@ -135,7 +174,8 @@ std::string mass_flow_csv(const std::vector<dem::scene::MassFlowSample>& log) {
 
 }  // namespace
 
-void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf, const config::DemCase& dc, const io::DemRunResult& r) {
+void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf, const config::DemCase& dc,
+                          const io::DemRunResult& r) {
   io::write_json_file(out_dir + "/summary.json", summary(cf, dc, r));
   io::write_dem_h5(out_dir, case_provenance(cf.path, cf.resolved_yaml), dc.scene, r);
   io::write_text_atomically(out_dir + "/mass_flow.csv", mass_flow_csv(r.mass_flow));
@@ -163,20 +203,15 @@ void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf
     line.back() = '\n';
     std::fputs(line.c_str(), stdout);
     if (r.neighbour_rebuilds >= 0)
-      std::printf("neighbour lists: %lld rebuilds (one per %.0f steps), %lld insertions/removals worked in without one\n",
-                  static_cast<long long>(r.neighbour_rebuilds),
-                  r.neighbour_rebuilds > 0 ? static_cast<double>(r.steps) / static_cast<double>(r.neighbour_rebuilds) : 0.0,
-                  static_cast<long long>(r.list_edits));
+      std::printf(
+          "neighbour lists: %lld rebuilds (one per %.0f steps), %lld insertions/removals worked in without one\n",
+          static_cast<long long>(r.neighbour_rebuilds),
+          r.neighbour_rebuilds > 0 ? static_cast<double>(r.steps) / static_cast<double>(r.neighbour_rebuilds) : 0.0,
+          static_cast<long long>(r.list_edits));
     if (r.threads > 1)
       std::printf("force pass: threads waited %.1f s in the pair pass and %.1f s in the parked pass for the slowest\n",
                   r.pair_pass_idle, r.parked_pass_idle);
   }
-  const double asked = dc.scene.feeder.mass_flow;
-  if (dc.scene.feeder.enabled && !dc.scene.slice.enabled && r.feeder_deferred > 0 && flows.fed < 0.9 * asked)
-    std::fprintf(stderr,
-                 "centrec dem: warning: the feeder delivered %.4g g/s of the %.4g g/s asked (%lld insertions "
-                 "deferred: its region was full); enlarge dem.feeder's region or lower the mass flow\n",
-                 flows.fed * 1e3, asked * 1e3, static_cast<long long>(r.feeder_deferred));
   if (r.fields.snapshots > 0)
     std::printf("film thickness %.2f +- %.2f d over %zu turns\n", r.fields.mean_thickness.mean_d,
                 r.fields.mean_thickness.std_d, r.fields.turns);
@@ -184,6 +219,7 @@ void write_dem_run_report(const std::string& out_dir, const config::CaseFile& cf
   std::printf("steady state: %s (tolerance %.0f %%, dem.run.steady_tolerance)\n",
               dem::scene::flow_steadiness(r.mass_flow, dc.scene, window, dc.run.steady_tolerance).describe().c_str(),
               100.0 * dc.run.steady_tolerance);
+  for (const std::string& w : dem_run_warnings(dc, r)) std::fprintf(stderr, "centrec dem: WARNING: %s\n", w.c_str());
 }
 
 }  // namespace centrec::runs

@@ -118,8 +118,16 @@ TEST(CliUsage, AFeedTheFeederCannotDeliverIsWarned) {
                                        "  run: {duration: 0.02, dt: 2.0e-5, threads: 1, checkpoint_interval: 0}\n";
   const BinaryRun r = run_binary({"dem", dir + "/case.yaml", "--out", dir + "/out"}, 60.0);
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("warning: the feeder delivered"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("WARNING: the feeder delivered"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("of the 300 g/s asked"), std::string::npos) << r.err;
+  // summary.json carries the same warnings: the shortfall, a flow not steady after 0.02 s, and
+  // the spin-up run past run.duration while it was not.
+  std::ifstream in(dir + "/out/summary.json");
+  const std::string summary((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* w : {"the feeder delivered", "the flow is not steady", "the spin-up ran"}) {
+    EXPECT_NE(summary.find(w), std::string::npos) << w << " not in summary.json";
+    EXPECT_NE(r.err.find(std::string("WARNING: ") + w), std::string::npos) << r.err;
+  }
   std::filesystem::remove_all(dir);
 }
 
