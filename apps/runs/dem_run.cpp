@@ -84,7 +84,7 @@ DemRun::DemRun(const config::CaseFile& cf, const config::DemCase& dc, const std:
       chunk_(std::max(sim_.dt() * scene_.steps_per_batch(), std::min(0.01, dc.run.duration))),
       steps_before_(ck ? ck->particle_steps : 0.0),
       wall_before_(ck ? ck->wall_time : 0.0),
-      progress_(dc.run.duration + dc.sampling.turns * period_, dc.run.progress_interval),
+      progress_(dc.run.duration + dc.sampling.turns * period_, dc.run.progress_interval, sim_.time()),
       sampler_(scene_, dc.sampling.sampler),
       tracks_(dc.scene.feeder.enabled && !dc.scene.slice.enabled),
       sampled_(ck ? ck->sampled_turns : 0),

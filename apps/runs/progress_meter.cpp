@@ -2,13 +2,15 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace centrec::runs {
 
-ProgressMeter::ProgressMeter(double total, double interval)
+ProgressMeter::ProgressMeter(double total, double interval, double done_at_start)
     : total_(total),
+      done_at_start_(done_at_start),
       tty_(isatty(fileno(stderr)) != 0),
       fixed_interval_(interval > 0.0),
       start_(Clock::now()),
@@ -40,7 +42,9 @@ void ProgressMeter::update(double done, double turns, double particle_steps, boo
   next_decile_ = static_cast<int>(std::floor(frac * 10.0 + 1e-9)) + 1;
   last_ = now;
   const double wall = elapsed();
-  const double eta = frac > 0.0 ? wall * (1.0 - frac) / frac : 0.0;
+  // The pace of this process: simulated time since its start over wall time.
+  const double ran = done - done_at_start_;
+  const double eta = ran > 0.0 ? wall * std::max(0.0, total_ - done) / ran : 0.0;
   const double rate = wall > 0.0 ? particle_steps / wall : 0.0;
   const std::string extra = status ? status() : std::string();
   std::fprintf(stderr, "%s  %-8s %5.1f %%  t = %.3f of %.3f s  turn %.1f%s%s  ETA %.0f s  %.3g particle-steps/s%s",

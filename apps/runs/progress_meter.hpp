@@ -12,8 +12,10 @@ namespace centrec::runs {
 
 class ProgressMeter {
  public:
-  // total: simulated seconds to run; interval: wall seconds between lines (0 = as above).
-  ProgressMeter(double total, double interval);
+  // total: simulated seconds to run; interval: wall seconds between lines (0 = as above);
+  // done_at_start: simulated seconds done before this process (a resumed run's), which the
+  // ETA leaves out of the pace.
+  ProgressMeter(double total, double interval, double done_at_start = 0.0);
   // Starts a named phase: one line naming it (and what it is for), then its progress lines.
   void phase(const std::string& name, const std::string& what);
   // Report if due: sim time done, turns done, particle-steps since the start; status() is
@@ -28,7 +30,7 @@ class ProgressMeter {
 
  private:
   using Clock = std::chrono::steady_clock;
-  double total_, interval_;
+  double total_, interval_, done_at_start_;
   bool tty_, fixed_interval_;
   bool line_open_ = false;  // a terminal line being updated in place, not yet ended
   int next_decile_ = 1;
