@@ -26,6 +26,8 @@ struct Overrides {
   std::optional<std::uint64_t> seed;  // dem.seed (a replica of the same case)
   std::optional<dem::WallRolling> wall_rolling;  // dem.contacts.wall_rolling_model
   bool any_operating_point() const { return speed_rpm || mass_flow; }
+  // Any value that changes or runs the DEM (all of them: a case without a DEM takes none).
+  bool any() const { return threads || duration || speed_rpm || mass_flow || seed || wall_rolling; }
 };
 
 // The receiver with the overrides' operating point.

@@ -75,7 +75,8 @@ void read_film(MapReader r, const std::string& case_dir, double particle_d, Ther
     c.film = th::analytic_film(af);
     c.film_source = {FilmSource::Kind::analytic, "", ""};
   } else {
-    const std::string path = resolve_path(case_dir, r.string("file", "", "a stored film field (film.h5 of `centrec run`), relative to the case file"));
+    const std::string path = resolve_path(
+        case_dir, r.string("file", "", "a stored film field (film.h5 of `centrec run`), relative to the case file"));
     const std::string group = r.string("group", "/film", "the HDF5 group of the film field in that file");
     try {
       c.film = io::read_film_field(io::H5File::open_read(path), group);
@@ -94,9 +95,10 @@ void read_film(MapReader r, const std::string& case_dir, double particle_d, Ther
 
 th::TimeFactor read_time_factor(MapReader r) {
   th::TimeFactor f;
-  const std::string kind = r.choice("kind", "constant", {"constant", "step", "pulse"},
-                                    "time history of the factor: constant 1, a ramped step to `level`, or a dip and back");
-  f.kind = kind == "step" ? th::TimeFactor::Kind::step
+  const std::string kind =
+      r.choice("kind", "constant", {"constant", "step", "pulse"},
+               "time history of the factor: constant 1, a ramped step to `level`, or a dip and back");
+  f.kind = kind == "step"    ? th::TimeFactor::Kind::step
            : kind == "pulse" ? th::TimeFactor::Kind::pulse
                              : th::TimeFactor::Kind::constant;
   if (f.kind != th::TimeFactor::Kind::constant) {
@@ -114,14 +116,18 @@ th::TimeFactor read_time_factor(MapReader r) {
 }
 
 void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
-  const std::string profile = r.choice("profile", "uniform", {"uniform", "gaussian", "table"},
-                                       "shape of the solar flux along the drum");
+  const std::string profile =
+      r.choice("profile", "uniform", {"uniform", "gaussian", "table"}, "shape of the solar flux along the drum");
   th::FluxProfile& f = m.flux;
   // The former keys named no plane and were read as the flux on the film; they are refused,
   // not reinterpreted, so a case written for them cannot silently change its power.
-  const struct { const char* old_key; const char* message; } kRenamed[] = {
-      {"q", "was renamed: give flux.q_film (W/m2, the sunlight's first incidence on the film: what flux.q meant) or "
-            "flux.q_aperture (W/m2, the mean flux through the cavity's aperture)"},
+  const struct {
+    const char* old_key;
+    const char* message;
+  } kRenamed[] = {
+      {"q",
+       "was renamed: give flux.q_film (W/m2, the sunlight's first incidence on the film: what flux.q meant) or "
+       "flux.q_aperture (W/m2, the mean flux through the cavity's aperture)"},
       {"q_peak", "was renamed flux.q_film_peak (W/m2, the Gaussian's peak on the film: what flux.q_peak meant)"},
       {"q_base", "was renamed flux.q_film_base (W/m2, the uniform part on the film: what flux.q_base meant)"}};
   for (const auto& k : kRenamed)
@@ -142,11 +148,12 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
     f.q = r.number("q_film_peak", f.q, Range::closed(0.0, 2e7), "W/m2", "peak of the Gaussian flux on the film");
     f.z_center = r.number("z_center", f.z_center, Range::any(), "m", "axial position of the peak");
     f.sigma = r.number("sigma", f.sigma, Range::positive(), "m", "standard deviation of the Gaussian along z");
-    f.q_base = r.number("q_film_base", 0.0, Range::closed(0.0, 2e7), "W/m2", "uniform flux on the film added to the Gaussian");
+    f.q_base =
+        r.number("q_film_base", 0.0, Range::closed(0.0, 2e7), "W/m2", "uniform flux on the film added to the Gaussian");
   } else {
     f.kind = th::FluxProfile::Kind::table;
-    const std::string path =
-        resolve_path(case_dir, r.string("table_file", "", "CSV of z (m) and q (W/m2, on the film), relative to the case file"));
+    const std::string path = resolve_path(
+        case_dir, r.string("table_file", "", "CSV of z (m) and q (W/m2, on the film), relative to the case file"));
     try {
       io::read_flux_table_csv(path, f.table_z, f.table_q);
       f.check();
@@ -157,16 +164,17 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
   // Solar absorption: Beer-Lambert below the surface (default; depth in particle diameters,
   // by default from the bed's solid fraction, thermal/film_model.hpp), uniform over n layers,
   // or at the surface.
-  const std::string absorption =
-      r.choice("absorption", r.has("absorb_depth_layers") ? "layers" : "extinction", {"extinction", "layers", "surface"},
-               "where the solar flux is absorbed: Beer-Lambert below the surface, uniformly over layers, or at "
-               "the surface (default layers when absorb_depth_layers is given)");
+  const std::string absorption = r.choice(
+      "absorption", r.has("absorb_depth_layers") ? "layers" : "extinction", {"extinction", "layers", "surface"},
+      "where the solar flux is absorbed: Beer-Lambert below the surface, uniformly over layers, or at "
+      "the surface (default layers when absorb_depth_layers is given)");
   if (absorption == "layers")
     m.surface.absorb_depth_layers = r.number("absorb_depth_layers", 0.0, Range::closed(0.0, 20.0), "particle diameters",
                                              "depth over which the flux is absorbed uniformly");
   if (absorption == "extinction")
-    m.surface.extinction_depth_d = r.number("extinction_depth_d", -1.0, Range::closed(-1.0, 20.0), "particle diameters",
-                                            "Beer-Lambert extinction depth (absorption extinction; -1: from the solid fraction, (1 - phi) / (1.5 phi))");
+    m.surface.extinction_depth_d = r.number(
+        "extinction_depth_d", -1.0, Range::closed(-1.0, 20.0), "particle diameters",
+        "Beer-Lambert extinction depth (absorption extinction; -1: from the solid fraction, (1 - phi) / (1.5 phi))");
   if (m.surface.extinction_depth_d == 0.0 && absorption == "extinction")
     r.fail("extinction_depth_d", "must be > 0 (or omitted for the value from the solid fraction)");
   if (absorption == "extinction" && m.surface.extinction_depth_d < 0.0)
@@ -181,16 +189,19 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
 void read_conductivity(MapReader r, th::FilmModel& m) {
   const std::string model = r.choice("model", "zbs", {"zbs", "constant"},
                                      "bed conductivity: Zehner-Bauer-Schluender with radiation, or a constant k");
-  if (model == "constant") m.conductivity.k_constant = r.required_number("k", Range::closed(1e-3, 2500.0), "W/(m K)", "the constant bed conductivity");
-  m.bed.shape_factor = r.number("shape_factor", m.bed.shape_factor, Range::positive(), "",
-                                "ZBS shape factor C_f (1.25 for spheres)");
+  if (model == "constant")
+    m.conductivity.k_constant =
+        r.required_number("k", Range::closed(1e-3, 2500.0), "W/(m K)", "the constant bed conductivity");
+  m.bed.shape_factor =
+      r.number("shape_factor", m.bed.shape_factor, Range::positive(), "", "ZBS shape factor C_f (1.25 for spheres)");
   m.bed.flattening = r.number("flattening", m.bed.flattening, Range::closed(0.0, 1.0), "",
                               "ZBS contact flattening coefficient (0.0077 for spheres)");
   m.bed.radiation = r.boolean("radiation", true, "add radiation between particles to the bed conductivity");
-  m.conductivity.mixing = r.boolean("mixing", true, "add the particles' dispersion (rho_s phi c_p D) to the conductivity");
+  m.conductivity.mixing =
+      r.boolean("mixing", true, "add the particles' dispersion (rho_s phi c_p D) to the conductivity");
   const std::string axial = r.choice("axial", "bed", {"bed", "bed_and_mixing", "none"},
                                      "conduction along z: the bed's, the bed's with mixing, or none");
-  m.conductivity.axial = axial == "none" ? th::ConductivitySettings::Axial::none
+  m.conductivity.axial = axial == "none"  ? th::ConductivitySettings::Axial::none
                          : axial == "bed" ? th::ConductivitySettings::Axial::bed
                                           : th::ConductivitySettings::Axial::bed_and_mixing;
   r.finish();
@@ -201,8 +212,9 @@ void read_conductivity(MapReader r, th::FilmModel& m) {
 void read_front_plate(MapReader& rad, th::CavitySettings& cav) {
   MapReader p = rad.child("front_plate", "the annular front plate around the aperture at z = L (cavity model)");
   // A resolved configuration writes both keys, the unused one at its default 0.
-  const double r_aperture = p.number("r_aperture", 0.0, Range::closed(0.0, 50.0), "m (0 = aperture_diameter / 2)",
-                                     "inner radius of the front plate: the aperture's radius (instead of aperture_diameter)");
+  const double r_aperture =
+      p.number("r_aperture", 0.0, Range::closed(0.0, 50.0), "m (0 = aperture_diameter / 2)",
+               "inner radius of the front plate: the aperture's radius (instead of aperture_diameter)");
   if (r_aperture > 0.0) {
     if (cav.aperture_diameter > 0.0 && cav.aperture_diameter != 2.0 * r_aperture)
       p.fail("r_aperture", "give the aperture once: radiation.aperture_diameter or radiation.front_plate.r_aperture");
@@ -214,7 +226,8 @@ void read_front_plate(MapReader& rad, th::CavitySettings& cav) {
                                    "solar absorptance of the front plate's inner face");
   cav.plate_emissivity = p.number("emissivity", -1.0, Range::closed(-1.0, 1.0), "(-1 = wall_emissivity)",
                                   "thermal emissivity of the front plate's inner face");
-  if (p.has("absorptance") && cav.plate_absorptance == 0.0) p.fail("absorptance", "must be in (0, 1] (or -1: the wall's)");
+  if (p.has("absorptance") && cav.plate_absorptance == 0.0)
+    p.fail("absorptance", "must be in (0, 1] (or -1: the wall's)");
   if (p.has("emissivity") && cav.plate_emissivity == 0.0) p.fail("emissivity", "must be in (0, 1] (or -1: the wall's)");
   if (p.has("absorptance") && cav.plate_absorptance < 0.0 && cav.plate_absorptance != -1.0)
     p.fail("absorptance", "must be in (0, 1] (or -1: the wall's)");
@@ -230,15 +243,17 @@ void read_solver(MapReader r, ThermalCase& c) {
   in.atol = r.number("atol", 1e-3, Range::closed(1e-10, 10.0), "K", "CVODE absolute tolerance");
   in.max_steps = r.integer("max_steps", 50000, 10, 100000000, "most CVODE steps per solve");
   in.max_order = static_cast<int>(r.integer("max_order", 5, 1, 5, "highest BDF order"));
-  in.linear_solver = r.choice("linear_solver", "band", {"band", "klu"}, "linear solver of the Newton iterations") == "klu" ? th::LinearSolver::klu
-                                                                                 : th::LinearSolver::band;
+  in.linear_solver =
+      r.choice("linear_solver", "band", {"band", "klu"}, "linear solver of the Newton iterations") == "klu"
+          ? th::LinearSolver::klu
+          : th::LinearSolver::band;
   c.steady.tolerance = r.number("steady_tolerance", 1e-10, Range::closed(1e-14, 1e-2), "",
                                 "scaled residual at which the film counts as steady (docs/thermal_model.md)");
   c.steady.newton_first = r.boolean("newton_first", true, "try damped Newton from the start before marching");
   c.steady.max_time_factor = r.number("max_time_scales", 1e4, Range::closed(1.0, 1e9), "",
-                                     "give up marching after this many system time scales");
+                                      "give up marching after this many system time scales");
   c.steady.max_wall_seconds = r.number("max_wall_time", 600.0, Range::closed(1.0, 1e7), "s",
-                                      "wall-time budget of the steady solve (docs/reliability.md)");
+                                       "wall-time budget of the steady solve (docs/reliability.md)");
   c.transient_settings.integrator = in;
   c.transient_settings.integrator.rtol =
       r.number("transient_rtol", 1e-6, Range::closed(1e-12, 1e-2), "", "CVODE relative tolerance of the transient");
@@ -264,22 +279,23 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                              "the film the thermal model heats: analytic or from a file (coupled cases: the DEM's, "
                              "through film.mapping)");
     if (film_from_dem && f.has("mapping")) {
+      // The choices and their meanings are the registry's rows (coupling/film_mappings.hpp).
       std::vector<std::string> names;
-      for (const coupling::FilmMappingEntry& e : coupling::film_mappings()) names.push_back(e.name);
+      std::string meaning = "how the DEM's film becomes the thermal film (docs/coupling.md)";
+      for (const coupling::FilmMappingEntry& e : coupling::film_mappings()) {
+        names.push_back(e.name);
+        meaning += std::string(names.size() == 1 ? ": " : "; ") + e.name + ", " + e.description;
+      }
       c.film_source.kind = FilmSource::Kind::dem;
-      c.film_source.mapping = f.choice("mapping", names.front(), names,
-                                       "how the DEM's film becomes the thermal film (docs/coupling.md): as_measured "
-                                       "(the developed sections; a slice's one), along_drum (a fed drum, section by "
-                                       "section past the feeder, cut at phi 0.1) or along_drum_carried_flow (the same "
-                                       "sections up to where they carry 99.5 % of their flow)");
+      c.film_source.mapping = f.choice("mapping", names.front(), names, meaning);
       f.finish();
     } else {
       read_film(f, case_dir, m.material.d, c);
     }
   }
 
-  const std::string model = t.choice("model", "2d", {"2d", "1d"},
-                                     "2D film (z and depth) or 1D depth-lumped (quick estimate)");
+  const std::string model =
+      t.choice("model", "2d", {"2d", "1d"}, "2D film (z and depth) or 1D depth-lumped (quick estimate)");
   c.grid.lumped = model == "1d";
   MapReader g = t.child("grid", "the finite-volume grid");
   c.grid.nz = static_cast<int>(g.integer("nz", 200, 2, 100000, "cells along the drum"));
@@ -289,7 +305,8 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   const double bytes = cells * (3.0 * (c.grid.lumped ? 1 : c.grid.nxi) + 1.0) * 8.0;
   if (bytes > 4e9)
     g.fail(c.grid.lumped ? "nz" : "nxi", "a grid of " + std::to_string(static_cast<long long>(cells)) +
-                                             " cells needs about " + std::to_string(static_cast<long long>(bytes / 1e9)) +
+                                             " cells needs about " +
+                                             std::to_string(static_cast<long long>(bytes / 1e9)) +
                                              " GB for its band Jacobian (at most 4): use fewer cells");
   g.finish();
   c.grid.advection = t.choice("advection", "van_leer", {"van_leer", "upwind"},
@@ -308,7 +325,8 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   }
   read_conductivity(t.child("conductivity", "effective conductivity of the film"), m);
   MapReader hc = t.child("heat_capacity", "the particles' specific heat");
-  if (hc.choice("model", "particle", {"particle", "constant"}, "c_p(T) of thermal.particle, or a constant") == "constant")
+  if (hc.choice("model", "particle", {"particle", "constant"}, "c_p(T) of thermal.particle, or a constant") ==
+      "constant")
     m.heat.cp_constant = hc.required_number("cp", kSolidHeatCapacity, "J/(kg K)", "the constant specific heat");
   hc.finish();
   read_flux(t.child("flux", "the concentrated solar flux"), case_dir, m);
@@ -323,10 +341,10 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                  "the top film_top_depth_d emits and absorbs per cell as a participating medium (two-flux)") ==
       "two_flux";
   if (m.film_top.two_flux)
-    m.film_top.depth_d = rad.number("film_top_depth_d", m.film_top.depth_d, Range::closed(0.5, 100.0),
-                                    "particle diameters",
-                                    "depth below the surface of the two-flux zone (ZBS without its radiation term, "
-                                    "Maxwell's conduction below phi 0.4 there)");
+    m.film_top.depth_d =
+        rad.number("film_top_depth_d", m.film_top.depth_d, Range::closed(0.5, 100.0), "particle diameters",
+                   "depth below the surface of the two-flux zone (ZBS without its radiation term, "
+                   "Maxwell's conduction below phi 0.4 there)");
   if (cav.enabled) {
     cav.aperture_diameter = rad.number("aperture_diameter", 0.0, Range::closed(0.0, 100.0), "m (0 = drum diameter)",
                                        "diameter of the aperture at z = L (cavity model)");
@@ -335,10 +353,12 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                                       "solar absorptance of the back plate and front annulus (cavity model)");
     cav.wall_emissivity = rad.number("wall_emissivity", cav.wall_emissivity, Range::open_closed(0.0, 1.0), "",
                                      "thermal emissivity of the back plate and front annulus (cavity model)");
-    cav.convection_correlation = rad.choice("convection", "correlation", {"correlation", "h_conv"},
-                                            "convection coefficient from the cavity correlation, or surface.h_conv (cavity model)") ==
-                                 "correlation";
-    cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg", "receiver tilt for the convection correlation (cavity model)") *
+    cav.convection_correlation =
+        rad.choice("convection", "correlation", {"correlation", "h_conv"},
+                   "convection coefficient from the cavity correlation, or surface.h_conv (cavity model)") ==
+        "correlation";
+    cav.tilt_rad = rad.number("tilt_deg", 45.0, Range::closed(0.0, 90.0), "deg",
+                              "receiver tilt for the convection correlation (cavity model)") *
                    3.14159265358979323846 / 180.0;
     read_front_plate(rad, cav);
     cav.spillage = rad.number("spillage", 0.0, Range::closed(0.0, 0.5), "",
@@ -359,15 +379,18 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                "applies to the convection correlation (radiation.convection: correlation), not to surface.h_conv");
   }
   if (!cav.enabled && m.flux.aperture_mean > 0.0)
-    t.fail("flux", "gives q_aperture, the flux through the cavity's aperture, but thermal.radiation.model is "
-                   "open_surface, which has no aperture: give flux.q_film or use the cavity model");
+    t.fail("flux",
+           "gives q_aperture, the flux through the cavity's aperture, but thermal.radiation.model is "
+           "open_surface, which has no aperture: give flux.q_film or use the cavity model");
   if (cav.enabled && !c.film_source.from_dem() && cav.aperture_diameter > c.film.drum_diameter * (1 + 1e-9))
-    rad.fail("aperture_diameter", "exceeds the drum diameter " + std::to_string(c.film.drum_diameter) + " m of the film");
+    rad.fail("aperture_diameter",
+             "exceeds the drum diameter " + std::to_string(c.film.drum_diameter) + " m of the film");
   rad.finish();
   MapReader s = t.child("surface", "the film surface's surroundings");
   if (cav.enabled && s.has("loss_factor"))
-    s.fail("loss_factor", "applies to the open-surface model only (thermal.radiation.model: open_surface); the "
-                          "cavity model computes what the cavity returns");
+    s.fail("loss_factor",
+           "applies to the open-surface model only (thermal.radiation.model: open_surface); the "
+           "cavity model computes what the cavity returns");
   m.surface.loss_factor = cav.enabled ? 1.0
                                       : s.number("loss_factor", 1.0, Range::closed(0.0, 1.0), "",
                                                  "share of the emitted radiation that is lost (open surface)");
@@ -379,16 +402,20 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
   MapReader w = t.child("wall", "heat loss through the drum wall");
   m.wall.adiabatic = w.boolean("adiabatic", false, "no heat loss through the wall");
   if (!m.wall.adiabatic) {
-    m.wall.U_w = w.number("U_w", 1.0, Range::open_closed(0.0, 1e5), "W/(m2 K)", "overall wall heat-transfer coefficient (unless adiabatic)");
-    m.wall.T_amb = w.number("T_amb", 300.0, kTemperature, "K", "ambient temperature outside the wall (unless adiabatic)");
+    m.wall.U_w = w.number("U_w", 1.0, Range::open_closed(0.0, 1e5), "W/(m2 K)",
+                          "overall wall heat-transfer coefficient (unless adiabatic)");
+    m.wall.T_amb =
+        w.number("T_amb", 300.0, kTemperature, "K", "ambient temperature outside the wall (unless adiabatic)");
   }
   w.finish();
   read_solver(t.child("solver", "the CVODE integrator and the steady-state search"), c);
   if (t.has("transient")) {
     MapReader tr = t.child("transient", "a transient run after the steady state (with flux or flow histories)");
     c.transient = true;
-    c.transient_settings.t_end = tr.required_number("t_end", Range::open_closed(0.0, 1e7), "s", "simulated time of the transient");
-    c.transient_settings.n_outputs = static_cast<int>(tr.integer("n_outputs", 121, 2, 100000, "output times, evenly spaced"));
+    c.transient_settings.t_end =
+        tr.required_number("t_end", Range::open_closed(0.0, 1e7), "s", "simulated time of the transient");
+    c.transient_settings.n_outputs =
+        static_cast<int>(tr.integer("n_outputs", 121, 2, 100000, "output times, evenly spaced"));
     m.flow_time = read_time_factor(tr.child("mass_flow", "a time history multiplying the mass flow"));
     tr.finish();
   } else if (m.flux_time.kind != th::TimeFactor::Kind::constant) {
@@ -444,7 +471,8 @@ ThermalCase read_thermal_case(const std::string& path) {
   if (!cf.thermal)
     throw ConfigError(path + ": no thermal: or film: section: `centrec thermal` solves a film's energy equation");
   if (cf.thermal->film_source.from_dem())
-    throw ConfigError(path + ": the film comes from the case's DEM: run it with `centrec run` (or give film: {file: ...})");
+    throw ConfigError(path +
+                      ": the film comes from the case's DEM: run it with `centrec run` (or give film: {file: ...})");
   ThermalCase c = *cf.thermal;
   c.resolved_yaml = cf.resolved_yaml;
   return c;

@@ -52,11 +52,11 @@ CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
     throw std::invalid_argument(cf.path +
                                 ": --dem-from takes the film of an earlier DEM run as it ran; it goes with "
                                 "neither a case without a DEM film nor --speed-rpm, --mass-flow or --seed");
-  if (!r.film_from_dem() && o.overrides.any_operating_point())
+  if (!r.film_from_dem() && o.overrides.any())
     throw std::invalid_argument(cf.path +
-                                ": --speed-rpm / --mass-flow change the DEM, but this case takes its film "
-                                "from " +
-                                r.thermal.film_source.text() + " (no DEM to rerun)");
+                                ": the DEM's flags (--speed-rpm, --mass-flow, --seed, --threads) "
+                                "change or run the DEM, but this case takes its film from " +
+                                r.thermal.film_source.text() + " (no DEM runs)");
   if (r.film_from_dem()) {
     if (!cf.dem) throw std::invalid_argument(cf.path + ": give a `dem:` section or `film: {file: ...}`");
     effective_dem(cf, o, r);

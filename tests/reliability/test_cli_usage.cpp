@@ -109,6 +109,22 @@ TEST(CliUsage, AFailedRunLeavesNoEmptyFolders) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/cache")) << r.err;
 }
 
+TEST(CliUsage, DemFlagsOnACaseWithoutADemAreRefused) {
+  // A thermal-only case runs no DEM: a seed (or any DEM flag) would be ignored without a word.
+  const std::string dir = temp_dir("cli_dem_flags");
+  for (const std::vector<std::string>& flag :
+       {std::vector<std::string>{"--seed", "3"}, {"--threads", "2"}, {"--speed-rpm", "60"}}) {
+    std::vector<std::string> args = {"run", CENTREC_SOURCE_DIR "/cases/thermal_centrec_uniform.yaml", "--out",
+                                     dir + "/out", "--no-plots"};
+    args.insert(args.end(), flag.begin(), flag.end());
+    const BinaryRun r = run_binary(args, 60.0);
+    EXPECT_NE(r.exit_code, 0) << flag[0] << ": " << r.err;
+    EXPECT_NE(r.err.find("no DEM runs"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out/summary.json")) << flag[0];
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CliUsage, AFeedTheFeederCannotDeliverIsWarned) {
   // 0.3 kg/s is below the densest-packing bound the case check refuses above, but far more
   // than random insertion into the feeder region achieves: the run says so.
