@@ -23,6 +23,10 @@ namespace centrec::coupling {
 // The solid fraction below which the DEM's top bins are the loose particles above the
 // film, not film (docs/coupling.md "Film as measured": what the cut leaves out is reported).
 constexpr double kFilmSolidFractionCut = 0.1;
+// Wall-distance points per gap between bin centres (kPointsPerGap - 1 between them): phi and
+// the flux phi u linear in between, so the film's flow is its bins' to 0.5-0.7 % (1: phi and
+// u each linear, 3-10 % more).
+constexpr int kPointsPerGap = 4;
 // A drum's developed film: the axial sections used, as fractions of its length (the same
 // window as the DEM's solid-fraction and dispersion samplers).
 using film::kDevelopedFrom;
