@@ -148,20 +148,19 @@ int cmd_run(const Args& args) {
   CommandLine app("run");
   app.add_option("CASE", case_path)->required();
   app.add_option("--out", out_dir, "the run's folder (created)")->required()->option_text("DIR");
-  app.add_option("--cache", o.cache_dir, "the DEM cache (default: the parent of DIR + /dem-cache)")->option_text("DIR");
   add_override_flags(app, o.overrides,
                      {OverrideFlag::speed_rpm, OverrideFlag::mass_flow, OverrideFlag::threads, OverrideFlag::seed});
   app.add_option("--replicas", replicas, "run the chain with N DEM seeds (seed, seed + 1, ...) and their spread")
       ->check(integer_in(1, 64))
       ->option_text("N");
-  app.add_option("--dem-from", o.dem_from, "take the film of a finished `centrec dem` run of the same DEM inputs")
-      ->option_text("DEM_DIR");
   app.add_flag("--no-plots", no_plots, "draw no figures");
   add_overwrite_flag(app, overwrite);
-  app.add_flag("--allow-small-drum", o.allow_small_drum,
-               "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
-  app.add_flag("--allow-unsteady", o.allow_unsteady,
-               "use a DEM film that is not at steady flow or misses the flux closure (with a warning)");
+  for (const runs::RunOptionFlag& f : runs::run_option_flags()) {
+    if (f.on)
+      app.add_flag(f.name, o.*f.on, f.help);
+    else
+      app.add_option(f.name, o.*f.text, f.help)->option_text(f.value_name);
+  }
   if (wants_help(args)) {
     print_run_help(app);
     return 0;

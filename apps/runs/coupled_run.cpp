@@ -44,6 +44,19 @@ void allow_or_refuse(CoupledRun& r, const std::string& problem, bool allowed, co
 
 }  // namespace
 
+const std::vector<RunOptionFlag>& run_option_flags() {
+  static const std::vector<RunOptionFlag> flags = {
+      {"--cache", "the DEM cache (default: the parent of DIR + /dem-cache)", nullptr, &RunOptions::cache_dir, "DIR"},
+      {"--dem-from", "take the film of a finished `centrec dem` run of the same DEM inputs", nullptr,
+       &RunOptions::dem_from, "DEM_DIR"},
+      {"--allow-small-drum", "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)",
+       &RunOptions::allow_small_drum},
+      {"--allow-unsteady", "use a DEM film that is not at steady flow or misses the flux closure (with a warning)",
+       &RunOptions::allow_unsteady},
+  };
+  return flags;
+}
+
 CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
   if (!cf.thermal) throw std::invalid_argument(cf.path + ": a coupled run needs a `thermal:` section");
   CoupledRun r;

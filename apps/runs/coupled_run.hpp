@@ -24,20 +24,32 @@
 namespace centrec::runs {
 
 struct RunOptions {
-  std::string cache_dir;         // DEM cache root (CACHE/<key>/)
-  config::Overrides overrides;   // --threads, --speed-rpm, --mass-flow, --seed
+  std::string cache_dir;          // DEM cache root (CACHE/<key>/)
+  config::Overrides overrides;    // --threads, --speed-rpm, --mass-flow, --seed
   bool allow_small_drum = false;  // run a DEM drum below coupling::kMinimumDrumDiameterOverD
   bool allow_unsteady = false;    // use a film that is not steady or fails the flux closure
-  std::string dem_from;  // a finished `centrec dem` run of the same DEM inputs: its dem.h5, no DEM run
+  std::string dem_from;           // a finished `centrec dem` run of the same DEM inputs: its dem.h5, no DEM run
 };
 
+// A `centrec run` flag that sets a RunOptions member, declared once with its help (the
+// case-value flags are config::Overrides', apps/cli/case_overrides.hpp): the command line
+// adds every row, so a new option is its member here and its row in coupled_run.cpp.
+struct RunOptionFlag {
+  const char* name;
+  const char* help;
+  bool RunOptions::*on = nullptr;           // a switch, or
+  std::string RunOptions::*text = nullptr;  // a value
+  const char* value_name = "";              // the value's placeholder in the help ("DIR")
+};
+const std::vector<RunOptionFlag>& run_option_flags();
+
 struct CoupledRun {
-  config::DemCase dem;                     // the DEM actually run (receiver derivation and overrides applied)
+  config::DemCase dem;  // the DEM actually run (receiver derivation and overrides applied)
   bool has_receiver = false;
   config::ReceiverCase receiver;
   std::string dem_dir, cache_key;  // where dem.h5 came from
   bool dem_cached = false;
-  bool dem_given = false;          // taken from RunOptions::dem_from
+  bool dem_given = false;        // taken from RunOptions::dem_from
   std::string dem_resumed_from;  // the killed run's cache folder this run continued ("" = none)
   nlohmann::json dem_summary;
   coupling::DemFilmAverages averages;
@@ -46,7 +58,7 @@ struct CoupledRun {
   coupling::ScaleUpRecord scale;
   coupling::ImposedFlow imposed;
   std::vector<std::string> warnings;  // what was allowed although not valid
-  config::ThermalCase thermal;             // with the coupled film
+  config::ThermalCase thermal;        // with the coupled film
   ThermalRun result;
   double dem_seconds = 0.0, mapping_seconds = 0.0, thermal_seconds = 0.0;
 
