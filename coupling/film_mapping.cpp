@@ -27,7 +27,7 @@ void fill_empty(std::vector<double>& v) {
 }
 }  // namespace
 
-MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut) {
+MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut, FilmTop top_at) {
   a.check();
   // A drum's sections next to the feeder and the outlet hold the small drum's own inflow
   // and outflow (particles falling in from the feeder, the film leaving over the edge),
@@ -39,7 +39,7 @@ MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut) {
     if (a.ring_z.size() > 1 && (zl < kDevelopedFrom || zl > kDevelopedTo)) continue;
     sections.push_back(i);
   }
-  return map_dem_sections(a, sections, phi_cut, FilmTop::whole_bins);
+  return map_dem_sections(a, sections, phi_cut, top_at);
 }
 
 MappedFilm map_dem_sections(const DemFilmAverages& a, const std::vector<std::size_t>& sections, double phi_cut,
@@ -179,6 +179,20 @@ MappedFilm map_dem_sections(const DemFilmAverages& a, const std::vector<std::siz
   f.scaling = "none: the DEM drum itself";
   f.check();
   return out;
+}
+
+FilmMappingResult map_film_as_measured_carried_flow(const DemFilmAverages& a) {
+  MappedFilm m = map_dem_film(a, kFilmSolidFractionCut, FilmTop::carried_flow);
+  FilmMappingResult r{std::move(m.film), {}};
+  FilmMappingReport& rep = r.report;
+  rep.mapping = "as_measured_carried_flow";
+  rep.figures = {{"film_carried_flow_share", kCarriedFlowShare}};
+  rep.profiles = {{"film_thickness", "m", m.cut.thickness, "", ""},
+                  {"flow_within_film_share", "1", m.cut.flow_within_share, "flow_within_film_share_min", ""}};
+  char b[160];
+  std::snprintf(b, sizeof b, "up to where it carries %.1f %% of the DEM's flow", 100.0 * kCarriedFlowShare);
+  rep.text = b;
+  return r;
 }
 
 FilmMappingResult map_film_as_measured(const DemFilmAverages& a) {

@@ -55,7 +55,8 @@ constexpr double kCarriedFlowShare = 0.995;
 
 // The developed sections (a slice: its one section), whole bins. Throws
 // std::invalid_argument naming the problem (empty film, no flow, ...).
-MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut = kFilmSolidFractionCut);
+MappedFilm map_dem_film(const DemFilmAverages& a, double phi_cut = kFilmSolidFractionCut,
+                        FilmTop top_at = FilmTop::whole_bins);
 // The given sections (indices into a.ring_z, increasing), cut as top_at says (phi_cut unused
 // for carried_flow).
 MappedFilm map_dem_sections(const DemFilmAverages& a, const std::vector<std::size_t>& sections, double phi_cut,
@@ -65,5 +66,8 @@ MappedFilm map_dem_sections(const DemFilmAverages& a, const std::vector<std::siz
 // film_solid_fraction_cut, per section the film's thickness (film_thickness, m) and the
 // share of the bins' flow inside it (flow_within_film_share).
 FilmMappingResult map_film_as_measured(const DemFilmAverages& a);
+// The same sections with the film's top where it carries kCarriedFlowShare of the flow
+// (FilmTop::carried_flow): the loose top inside it.
+FilmMappingResult map_film_as_measured_carried_flow(const DemFilmAverages& a);
 
 }  // namespace centrec::coupling
