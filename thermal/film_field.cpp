@@ -83,8 +83,13 @@ void FilmField::check() const {
                                   " m/s is not that of a particle film (at most 100 m/s)");
     if (!(D[k] <= 1.0))
       throw std::invalid_argument("film field: dispersion " + std::to_string(D[k]) + " m2/s is beyond 1 m2/s");
-    if (!(phi[k] > 0.0 && phi[k] < 1.0))
-      throw std::invalid_argument("film field: solid fraction must be in (0, 1), got " + std::to_string(phi[k]));
+    // Inside the film there is solid everywhere; above its top a point may lie in an empty bin
+    // (a film whose profile falls to nothing within a bin of its top, coupling/film_mapping.cpp).
+    const bool in_film = eta[k % neta()] <= t[k / neta()];
+    if (!((in_film ? phi[k] > 0.0 : phi[k] >= 0.0) && phi[k] < 1.0))
+      throw std::invalid_argument("film field: solid fraction must be in " + std::string(in_film ? "(0, 1)" : "[0, 1)") +
+                                  (in_film ? " inside the film" : " above the film's top") + ", got " +
+                                  std::to_string(phi[k]));
     if (!(u[k] >= 0.0))
       throw std::invalid_argument("film field: axial velocity must be >= 0 (the film flows toward the outlet), got " +
                                   std::to_string(u[k]));
