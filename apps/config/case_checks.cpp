@@ -178,12 +178,21 @@ std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived) {
                                          g(a.max_impact_speed) + " m/s); use dt <= " + g(a.stable_bound) +
                                          " s (recommended " + g(a.recommended) + " s)"};
   const double dt = s.dt > 0.0 ? s.dt : a.recommended;
-  const double simulated = dc.run.duration + dc.sampling.turns * dem::scene::turn_period(s);
+  if (dc.run.duration < dt)
+    return CaseProblem{"dem.run.duration", "run.duration = " + g(dc.run.duration) +
+                                               " s is shorter than one time step (dt = " + g(dt) +
+                                               " s): the spin-up would run no step; give at least a few drum turns"};
+  // The longest run: the spin-up with its longest extension, then the sampled turns.
+  const double extension = dc.run.extension_cap();
+  const double simulated = dc.run.duration + extension + dc.sampling.turns * dem::scene::turn_period(s);
   const double steps = simulated / dt;
   if (!(steps <= kMaxSteps))
-    return CaseProblem{s.dt > 0.0 ? "dem.run.dt" : "dem.run.duration",
-                       "the run would take " + g(steps) + " time steps (" + g(simulated) + " s simulated at dt = " +
-                           g(dt) + " s), more than " + g(kMaxSteps) + ": it cannot finish; check run.dt and run.duration"};
+    return CaseProblem{s.dt > 0.0 && extension <= dc.run.duration ? "dem.run.dt"
+                       : extension > dc.run.duration             ? "dem.run.max_extension"
+                                                                 : "dem.run.duration",
+                       "the run would take up to " + g(steps) + " time steps (" + g(simulated) +
+                           " s simulated at dt = " + g(dt) + " s, the spin-up's longest extension included), more than " +
+                           g(kMaxSteps) + ": it cannot finish; check run.dt, run.duration and run.max_extension"};
   return std::nullopt;
 }
 

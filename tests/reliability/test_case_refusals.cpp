@@ -124,6 +124,16 @@ TEST(CaseRefusals, ValidateMakesTheChecksTheRunMakes) {
   // A step count that cannot finish (the hang of dt 1e-300).
   EXPECT_HAS(error_of(with(kDem, "dt: 2.0e-5", "dt: 1e-300")), "time steps");
   EXPECT_HAS(error_of(with(kDem, "duration: 1.5", "duration: 1e9")), "cannot finish");
+  // A spin-up shorter than one time step runs no step: no spin-up at all.
+  const std::string blink = error_of(with(kDem, "duration: 1.5", "duration: 1e-300"));
+  EXPECT_HAS(blink, "dem.run.duration");
+  EXPECT_HAS(blink, "shorter than one time step");
+  EXPECT_EQ(error_of(with(kDem, "duration: 1.5", "duration: 2.0e-5")), "");
+  // The longest extension counts in the step guard (a slice that never reaches its flow
+  // target would extend its spin-up for years).
+  const std::string endless = error_of(with(kDem, "dt: 2.0e-5}", "dt: 2.0e-5, max_extension: 1e12}"));
+  EXPECT_HAS(endless, "dem.run.max_extension");
+  EXPECT_HAS(endless, "cannot finish");
   // A feed the feeder region cannot insert.
   EXPECT_HAS(error_of(with(kDem, "mass_flow: 8.925e-3", "mass_flow: 1e300")), "dem.feeder.mass_flow: the feed 1e+300 kg/s exceeds what the feeder region can insert");
   EXPECT_HAS(error_of(std::string(kDem) + "  initial_film: {particles: 100000000}\n"), "do not fit in the drum");
