@@ -46,13 +46,10 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
     b.convected += st.convected * g.dz;
     b.wall += wall_loss(i, y[bottom], props_[bottom].kn) * g.dz;
   }
-  double m_out = 0.0, H_out = 0.0, H_in = 0.0;
+  const FaceStream out = face_stream(nz, y, in.flow_factor);
+  const double m_out = out.mass, H_out = out.enthalpy;
+  double H_in = 0.0;
   for (int j = 0; j < nxi; ++j) {
-    const double m_o = in.flow_factor * g.m_axial[nz * nxi + j];
-    const double h_face = advection_ == Advection::upwind ? props_[(nz - 1) * nxi + j].h
-                                                          : model_.heat.enthalpy(face_temperature(nz, j, y));
-    m_out += m_o;
-    H_out += m_o * h_face;
     H_in += in.flow_factor * g.m_axial[j] * model_.heat.enthalpy(model_.T_in);
     b.inlet_conduction += props_[j].kz * (g.tf[0] / nxi) * (y[j] - model_.T_in) / (0.5 * g.dz);
   }
@@ -105,6 +102,20 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
   return b;
 }
 
+FilmOperator::FaceStream FilmOperator::face_stream(int f, const double* y, double flow_factor) const {
+  const FilmGrid& g = grid_;
+  const int nxi = g.nxi;
+  FaceStream s;
+  for (int j = 0; j < nxi; ++j) {
+    const double m = flow_factor * g.m_axial[f * nxi + j];
+    const double h = advection_ == Advection::upwind ? props_[(f - 1) * nxi + j].h
+                                                     : model_.heat.enthalpy(face_temperature(f, j, y));
+    s.mass += m;
+    s.enthalpy += m * h;
+  }
+  return s;
+}
+
 ThermalFields FilmOperator::fields(double t, const double* y) {
   const FilmGrid& g = grid_;
   const long n = size();
@@ -132,6 +143,8 @@ ThermalFields FilmOperator::fields(double t, const double* y) {
     f.q_emitted.push_back(two_flux() ? top_net_emitted(i, y, top_irradiation(i)) : st.emitted);
     f.q_convected.push_back(st.convected);
     f.q_wall.push_back(wall_loss(i, y[bottom], f.k_n[bottom]));
+    const FaceStream leaving = face_stream(i + 1, y, in.flow_factor);
+    f.T_mixing_cup.push_back(leaving.mass > 0 ? model_.heat.temperature(leaving.enthalpy / leaving.mass) : model_.T_in);
   }
   if (cavity_) {
     const Cavity& c = *cavity_;

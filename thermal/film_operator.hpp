@@ -64,6 +64,9 @@ struct FilmBalance {
 struct ThermalFields {
   std::vector<double> T, k_n, k_bed, k_rad, k_mix;
   std::vector<double> T_surface, q_absorbed, q_emitted, q_convected, q_wall;  // per column [nz], W/m2
+  // Per column [nz]: the mixing-cup temperature of the stream leaving it (weight rho_b u c_p,
+  // as T_out, which is the last column's), K.
+  std::vector<double> T_mixing_cup;
   // Cavity model: enclosure surfaces (rings, back plate, front annulus), per surface.
   std::vector<double> cavity_T, cavity_solar_irradiation, cavity_thermal_irradiation;  // K, W/m2, W/m2
 };
@@ -132,6 +135,12 @@ class FilmOperator : public OdeSystem {
   double k_mix(int p, double T) const;  // phi rho_s c_p D
   // Temperature advected through axial face f (0..nz) of stripe j.
   double face_temperature(int f, int j, const double* T) const;
+  // The stream through axial face f (1..nz) over the column: its mass flow per width and the
+  // enthalpy it carries (props_ must hold the props of T).
+  struct FaceStream {
+    double mass = 0.0, enthalpy = 0.0;  // kg/(m s), W/m
+  };
+  FaceStream face_stream(int f, const double* T, double flow_factor) const;
   SurfaceState surface(int i, double T_p, double kn, const Inputs& in) const;
   double solar_irradiation(int i, const Inputs& in) const;    // primary + diffuse sunlight on column i, W/m2
   // Cavity model: brings the enclosure state (surface temperatures of the columns and

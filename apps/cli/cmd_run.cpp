@@ -229,7 +229,7 @@ int cmd_run(const Args& args) {
               k_mean(&thermal::KeffSection::mixing));
   std::printf(
       "  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote "
-      "%s/{summary.json,results.h5,results.xmf,film.h5}\n",
+      "%s/{summary.json,results.h5,results.xmf,film.h5,along_z.csv}\n",
       r.dem_seconds, r.mapping_seconds, r.thermal_seconds, out_dir.c_str());
   if (plots) {
     std::vector<std::string> plot_args = {out_dir};

@@ -44,6 +44,7 @@ int cmd_thermal(const Args& args) {
   const runs::ThermalRun r = runs::run_thermal_case(c);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   runs::write_thermal_h5(out_dir + "/thermal.h5", c, r);
+  io::write_text_atomically(out_dir + "/along_z.csv", runs::along_z_csv(r));
   nlohmann::json summary = runs::thermal_summary(c, r);
   summary["wall_time_s"] = seconds;
   io::write_json_file(out_dir + "/summary.json", summary);
@@ -65,7 +66,7 @@ int cmd_thermal(const Args& args) {
                 summary["transient"]["t_end_s"].get<double>(), summary["transient"]["T_out_start_K"].get<double>(),
                 summary["transient"]["T_out_end_K"].get<double>(), summary["transient"]["T_out_min_K"].get<double>(),
                 summary["transient"]["T_out_max_K"].get<double>(), r.transient.stats.steps, r.transient_seconds);
-  std::printf("  wrote %s/thermal.h5 and %s/summary.json\n", out_dir.c_str(), out_dir.c_str());
+  std::printf("  wrote %s/{thermal.h5,thermal.xmf,summary.json,along_z.csv}\n", out_dir.c_str());
   return 0;
 }
 

@@ -47,6 +47,7 @@ void write_coupled_h5(const std::string& dir, const CoupledRun& r, const io::Pro
   write_coupling_group(f, r);
   f.commit();
   io::write_text_atomically(dir + "/results.xmf", thermal_xdmf("results.h5", r.result));
+  io::write_text_atomically(dir + "/along_z.csv", along_z_csv(r.result));
   io::H5File film = io::H5File::create(dir + "/film.h5");
   io::write_provenance(film, p);
   film.set_attribute("/", "film_source", r.thermal.film_source.text());

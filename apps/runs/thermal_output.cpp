@@ -37,6 +37,15 @@ nlohmann::json balance_json(const thermal::FilmBalance& b) {
 }
 
 // Mean solar flux over a plane that the power crosses (W/m2; 0 for a plane of no area).
+// A unit as a column-name suffix: "W/(m K)" -> "W_mK", "W/m2" -> "W_m2".
+std::string csv_unit(const std::string& units) {
+  std::string u;
+  for (const char ch : units)
+    if (ch == '/') u += '_';
+    else if (ch != '(' && ch != ')' && ch != ' ') u += ch;
+  return u;
+}
+
 double mean_flux(double power, double area) { return area > 0 ? power / area : 0.0; }
 
 // The receiver's power flow (W): what enters through the aperture and where it goes, and the
@@ -97,6 +106,29 @@ void write_columns(io::H5File& f, const std::string& prefix, const std::vector<R
   }
 }
 
+// The per-column series of the steady state ([nz], /grid/z their scale): written to /steady
+// of thermal.h5 and results.h5 and as columns of DIR/along_z.csv, from this one list.
+struct ColumnSeries {
+  const char* name;
+  const char* units;
+  const std::vector<double> thermal::ThermalFields::*values;
+};
+const ColumnSeries kColumnSeries[] = {{"T_mixing_cup", "K", &thermal::ThermalFields::T_mixing_cup},
+                                      {"T_surface", "K", &thermal::ThermalFields::T_surface},
+                                      {"q_absorbed", "W/m2", &thermal::ThermalFields::q_absorbed},
+                                      {"q_emitted", "W/m2", &thermal::ThermalFields::q_emitted},
+                                      {"q_convected", "W/m2", &thermal::ThermalFields::q_convected},
+                                      {"q_wall", "W/m2", &thermal::ThermalFields::q_wall}};
+
+// Per-section k_eff and its parts (/steady/keff and columns of along_z.csv).
+const Column<thermal::KeffSection> kKeffColumns[] = {
+    {"z", "m", [](const auto& s) { return s.z; }},
+    {"k_eff", "W/(m K)", [](const auto& s) { return s.k_eff; }},
+    {"bed_conduction", "W/(m K)", [](const auto& s) { return s.bed_conduction; }},
+    {"radiation", "W/(m K)", [](const auto& s) { return s.radiation; }},
+    {"mixing", "W/(m K)", [](const auto& s) { return s.mixing; }},
+    {"moving_thickness", "m", [](const auto& s) { return s.moving_thickness; }}};
+
 // The fields results.xmf and thermal.xmf show, as flat [nz * nxi] copies in /xdmf: XDMF
 // readers take point data in point order, one dimension (meshio does not reshape).
 struct XdmfField {
@@ -142,6 +174,24 @@ std::string thermal_xdmf(const std::string& h5_name, const ThermalRun& r) {
   return x.str();
 }
 
+std::string along_z_csv(const ThermalRun& r) {
+  const thermal::FilmGrid& g = r.op->grid();
+  std::ostringstream c;
+  c.precision(10);
+  c << "z_m,thickness_m";
+  for (const ColumnSeries& s : kColumnSeries) c << ',' << s.name << '_' << csv_unit(s.units);
+  for (std::size_t k = 1; k < std::size(kKeffColumns); ++k)
+    c << ",keff_" << kKeffColumns[k].name << '_' << csv_unit(kKeffColumns[k].units);
+  c << '\n';
+  for (std::size_t i = 0; i < static_cast<std::size_t>(g.nz); ++i) {
+    c << g.zc[i] << ',' << g.tc[i];
+    for (const ColumnSeries& s : kColumnSeries) c << ',' << (r.fields.*s.values)[i];
+    for (std::size_t k = 1; k < std::size(kKeffColumns); ++k) c << ',' << kKeffColumns[k].get(r.keff[i]);
+    c << '\n';
+  }
+  return c.str();
+}
+
 void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r, const io::Provenance& p) {
   io::write_provenance(f, p);
   f.set_attribute("/", "title", c.title);
@@ -179,25 +229,15 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
   f.write("/steady/k_bed", fl.k_bed, {nz, nxi}, "W/(m K)");
   f.write("/steady/k_rad", fl.k_rad, {nz, nxi}, "W/(m K)");
   f.write("/steady/k_mix", fl.k_mix, {nz, nxi}, "W/(m K)");
-  f.write("/steady/T_surface", fl.T_surface, "K");
-  f.write("/steady/q_absorbed", fl.q_absorbed, "W/m2");
-  f.write("/steady/q_emitted", fl.q_emitted, "W/m2");
-  f.write("/steady/q_convected", fl.q_convected, "W/m2");
-  f.write("/steady/q_wall", fl.q_wall, "W/m2");
+  f.attach_scale("/grid/thickness", 0, "/grid/z", "z");
+  for (const ColumnSeries& c : kColumnSeries) {
+    f.write(std::string("/steady/") + c.name, fl.*c.values, c.units);
+    f.attach_scale(std::string("/steady/") + c.name, 0, "/grid/z", "z");
+  }
   // Per-section k_eff and the transient series: one column per member, written in a loop.
-  const Column<thermal::KeffSection> keff_columns[] = {
-      {"z", "m", [](const auto& s) { return s.z; }},
-      {"k_eff", "W/(m K)", [](const auto& s) { return s.k_eff; }},
-      {"bed_conduction", "W/(m K)", [](const auto& s) { return s.bed_conduction; }},
-      {"radiation", "W/(m K)", [](const auto& s) { return s.radiation; }},
-      {"mixing", "W/(m K)", [](const auto& s) { return s.mixing; }},
-      {"moving_thickness", "m", [](const auto& s) { return s.moving_thickness; }}};
-  write_columns(f, "/steady/keff/", r.keff, keff_columns);
+  write_columns(f, "/steady/keff/", r.keff, kKeffColumns);
   for (const char* name : {"k_eff", "bed_conduction", "radiation", "mixing", "moving_thickness"})
     f.attach_scale(std::string("/steady/keff/") + name, 0, "/steady/keff/z", "z");
-  for (const char* name : {"/grid/thickness", "/steady/T_surface", "/steady/q_absorbed", "/steady/q_emitted",
-                           "/steady/q_convected", "/steady/q_wall"})
-    f.attach_scale(name, 0, "/grid/z", "z");
   for (const char* name : {"/grid/eta", "/grid/u", "/grid/phi", "/grid/D", "/steady/T", "/steady/k_n", "/steady/k_bed",
                            "/steady/k_rad", "/steady/k_mix"}) {
     f.attach_scale(name, 0, "/grid/z", "z");

@@ -16,6 +16,10 @@ namespace centrec::runs {
 void write_thermal_h5(const std::string& path, const config::ThermalCase& c, const ThermalRun& r);
 // The same content into an open file (provenance, /grid, /steady, /transient, /film).
 void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r, const io::Provenance& p);
+// DIR/along_z.csv: one row per thermal grid column from the feed end to the outlet: z,
+// thickness, the mixing-cup temperature leaving it, the surface temperature, the absorbed,
+// emitted, convected and wall fluxes and k_eff with its parts (docs/outputs.md).
+std::string along_z_csv(const ThermalRun& r);
 // The XDMF 3 of the film grid in the file named h5_name (beside it): the cell centres as
 // points (z, eta, 0), quadrilaterals between them, the steady fields as point data.
 std::string thermal_xdmf(const std::string& h5_name, const ThermalRun& r);

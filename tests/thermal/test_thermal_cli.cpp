@@ -125,6 +125,47 @@ TEST(ThermalCli, CommandWritesH5AndSummary) {
   EXPECT_GT(floor, 0.0);
   EXPECT_DOUBLE_EQ(tol, std::max(1e-10, 4.0 * floor));
   EXPECT_LE(res, tol);
+  // along_z.csv: a row per column from the feed end; the mixing-cup temperature leaving each
+  // column (through the face to the next) against the flow-weighted (phi u) means of the
+  // columns' cell temperatures, taken midway between the two columns (the outlet: extrapolated
+  // from the last two), as the advection's smooth face values are; the last one is T_out.
+  std::ifstream csv(dir + "/out/along_z.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("z_m,thickness_m,T_mixing_cup_K,T_surface_K,", 0), 0u) << header;
+  EXPECT_NE(header.find("keff_mixing_W_mK"), std::string::npos) << header;
+  const auto u = f.read("/grid/u"), phi = f.read("/grid/phi");
+  const auto cup = f.read("/steady/T_mixing_cup");
+  ASSERT_EQ(cup.size(), 40u);
+  std::vector<double> column_mean(40);
+  for (std::size_t i = 0; i < 40; ++i) {
+    double w = 0.0, wT = 0.0;
+    for (std::size_t j = 0; j < 12; ++j) {
+      w += phi[i * 12 + j] * u[i * 12 + j];
+      wT += phi[i * 12 + j] * u[i * 12 + j] * T[i * 12 + j];
+    }
+    column_mean[i] = wT / w;
+  }
+  std::size_t rows = 0;
+  double worst = 0.0, previous = 0.0;
+  while (std::getline(csv, line)) {
+    double z, t, Tm;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf", &z, &t, &Tm), 3) << line;
+    ASSERT_LT(rows, 40u);
+    EXPECT_NEAR(Tm, cup[rows], 1e-6 * Tm);  // the CSV is the HDF5 series
+    const double face = rows + 1 < 40 ? 0.5 * (column_mean[rows] + column_mean[rows + 1])
+                                      : 1.5 * column_mean[rows] - 0.5 * column_mean[rows - 1];
+    worst = std::max(worst, std::abs(Tm - face));
+    EXPECT_GT(Tm, rows == 0 ? 873.15 : previous) << "row " << rows;  // heated along the flow
+    previous = Tm;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 40u);
+  std::printf("along_z.csv: %zu rows, mixing cup leaving the last column %.6f K (T_out %.6f K), worst |mixing cup - "
+              "the columns' phi u means at the face| %.3f K\n",
+              rows, previous, nlohmann::json::parse(text)["T_out_K"].get<double>(), worst);
+  EXPECT_NEAR(previous, nlohmann::json::parse(text)["T_out_K"].get<double>(), 1e-6 * previous);
+  EXPECT_LT(worst, 0.5);
   std::filesystem::remove_all(dir);
 }
 
