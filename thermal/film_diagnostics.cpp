@@ -62,7 +62,7 @@ FilmBalance FilmOperator::balance(double t, const double* y) {
     *x *= g.perimeter;
   b.mass_flow = m_out * g.perimeter;
   // A resting film has no outlet stream: report the inlet temperature.
-  b.T_out = m_out > 0 ? model_.heat.temperature(H_out / m_out) : model_.T_in;
+  b.T_out = mixing_cup_temperature(out);
   // The case's aperture power: what entered plus what spilled onto the front plate.
   b.aperture_power = cavity_ && model_.cavity.spillage > 0 ? b.incident / (1.0 - model_.cavity.spillage) : b.incident;
   b.spillage_loss = b.aperture_power - b.incident;
@@ -116,6 +116,10 @@ FilmOperator::FaceStream FilmOperator::face_stream(int f, const double* y, doubl
   return s;
 }
 
+double FilmOperator::mixing_cup_temperature(const FaceStream& s) const {
+  return s.mass > 0 ? model_.heat.temperature(s.enthalpy / s.mass) : model_.T_in;
+}
+
 ThermalFields FilmOperator::fields(double t, const double* y) {
   const FilmGrid& g = grid_;
   const long n = size();
@@ -144,7 +148,7 @@ ThermalFields FilmOperator::fields(double t, const double* y) {
     f.q_convected.push_back(st.convected);
     f.q_wall.push_back(wall_loss(i, y[bottom], f.k_n[bottom]));
     const FaceStream leaving = face_stream(i + 1, y, in.flow_factor);
-    f.T_mixing_cup.push_back(leaving.mass > 0 ? model_.heat.temperature(leaving.enthalpy / leaving.mass) : model_.T_in);
+    f.T_mixing_cup.push_back(mixing_cup_temperature(leaving));
   }
   if (cavity_) {
     const Cavity& c = *cavity_;

@@ -141,6 +141,8 @@ class FilmOperator : public OdeSystem {
     double mass = 0.0, enthalpy = 0.0;  // kg/(m s), W/m
   };
   FaceStream face_stream(int f, const double* T, double flow_factor) const;
+  // Its mixing-cup temperature (T_in for a stream at rest).
+  double mixing_cup_temperature(const FaceStream& s) const;
   SurfaceState surface(int i, double T_p, double kn, const Inputs& in) const;
   double solar_irradiation(int i, const Inputs& in) const;    // primary + diffuse sunlight on column i, W/m2
   // Cavity model: brings the enclosure state (surface temperatures of the columns and

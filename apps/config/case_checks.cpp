@@ -187,9 +187,9 @@ std::optional<CaseProblem> dem_run_problem(const DemCase& dc, bool derived) {
   const double simulated = dc.run.duration + extension + dc.sampling.turns * dem::scene::turn_period(s);
   const double steps = simulated / dt;
   if (!(steps <= kMaxSteps))
-    return CaseProblem{s.dt > 0.0 && extension <= dc.run.duration ? "dem.run.dt"
-                       : extension > dc.run.duration             ? "dem.run.max_extension"
-                                                                 : "dem.run.duration",
+    return CaseProblem{extension > dc.run.duration ? "dem.run.max_extension"
+                       : s.dt > 0.0                  ? "dem.run.dt"
+                                                     : "dem.run.duration",
                        "the run would take up to " + g(steps) + " time steps (" + g(simulated) +
                            " s simulated at dt = " + g(dt) + " s, the spin-up's longest extension included), more than " +
                            g(kMaxSteps) + ": it cannot finish; check run.dt, run.duration and run.max_extension"};

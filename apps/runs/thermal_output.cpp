@@ -36,7 +36,6 @@ nlohmann::json balance_json(const thermal::FilmBalance& b) {
           {"balance_residual", b.residual}};
 }
 
-// Mean solar flux over a plane that the power crosses (W/m2; 0 for a plane of no area).
 // A unit as a column-name suffix: "W/(m K)" -> "W_mK", "W/m2" -> "W_m2".
 std::string csv_unit(const std::string& units) {
   std::string u;
@@ -46,6 +45,7 @@ std::string csv_unit(const std::string& units) {
   return u;
 }
 
+// Mean solar flux over a plane that the power crosses (W/m2; 0 for a plane of no area).
 double mean_flux(double power, double area) { return area > 0 ? power / area : 0.0; }
 
 // The receiver's power flow (W): what enters through the aperture and where it goes, and the
