@@ -160,12 +160,12 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     const io::RunCheckpoint ck = io::read_checkpoint(from);
-    const config::CaseFile cf = runs::drum_case_of(ck);
     // Both engines run the wall rolling LIGGGHTS' mesh walls can express (docs/dem_physics.md).
     const bool peers = !no_liggghts && liggghts::liggghts_available("mpirun", "liggghts");
     config::Overrides o;
-    if (peers) o.wall_rolling = dem::WallRolling::liggghts;
-    const config::DemCase dc = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, o);
+    if (peers) o.keys["dem.contacts.wall_rolling_model"] = "liggghts";
+    const config::CaseFile cf = config::with_overrides(runs::drum_case_of(ck), o);
+    const config::DemCase dc = config::effective_dem(*cf.dem, cf.receiver ? &*cf.receiver : nullptr, {});
     if (dc.scene.slice.enabled || !dc.scene.feeder.enabled)
       throw std::invalid_argument(from + ": not a fed drum (this benchmark times the feeder and the outlet too)");
     config::DemCase centrec_dc = dc;

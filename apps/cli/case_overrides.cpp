@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "cli/command_line.hpp"
@@ -20,78 +22,96 @@ std::string text(double v) {
   }
   return b;
 }
-std::string text(long long v) { return std::to_string(v); }
-const char* text(dem::WallRolling w) { return w == dem::WallRolling::relative ? "relative" : "liggghts"; }
 
+// One override flag. It sets a case key (`key`), or the operating point (`point`: the
+// receiver's, or the DEM drum's without one, config::effective_dem), or, with neither, any
+// key (--set KEY=VALUE). A key's value is checked by the key's own reader when the case is
+// read again with it; the operating point against the range the keys share.
 struct Flag {
-  OverrideFlag which;
   const char* name;
-  const char* value;  // the value's name in the usage
+  const char* value;     // the value's name in the usage
+  const char* commands;  // the commands that take it, separated by spaces
   const char* help;
-  CLI::Option* (*add)(CommandLine& app, config::Overrides& o, const char* name, const char* help);
-  std::string (*given)(const config::Overrides& o);  // the value as given, "" = not given
+  const char* key = nullptr;
+  std::optional<double> config::Overrides::*point = nullptr;
+  config::Range range{};  // of `point`
+  const char* unit = "";
 };
 
-// The ranges are the keys' own (config/shared_ranges.hpp); the case checks then see the value
-// as the case's own.
 const Flag kFlags[] = {
-    {OverrideFlag::threads, "--threads", "N", "DEM threads (0-1024, 0 = all cores) instead of dem.run.threads",
-     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
-       return app.add_option_function<int>(n, [&o](const int& v) { o.threads = v; }, h)->check(integer_in(0, config::shared_ranges::kThreadsMax));
-     },
-     [](const config::Overrides& o) { return o.threads ? text(static_cast<long long>(*o.threads)) : std::string(); }},
-    {OverrideFlag::duration, "--duration", "SECONDS", "seconds of spin-up instead of dem.run.duration",
-     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
-       return app.add_option_function<double>(n, [&o](const double& v) { o.duration = v; }, h)
-           ->check(number_in(config::shared_ranges::duration(), "s"));
-     },
-     [](const config::Overrides& o) { return o.duration ? text(*o.duration) : std::string(); }},
-    {OverrideFlag::speed_rpm, "--speed-rpm", "RPM", "the receiver's speed (or, without one, the DEM drum's), rpm",
-     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
-       return app.add_option_function<double>(n, [&o](const double& v) { o.speed_rpm = v; }, h)
-           ->check(number_in(config::shared_ranges::speed_rpm(), "rpm"));
-     },
-     [](const config::Overrides& o) { return o.speed_rpm ? text(*o.speed_rpm) : std::string(); }},
-    {OverrideFlag::mass_flow, "--mass-flow", "KG_S", "the receiver's mass flow (or, without one, the DEM feeder's), kg/s",
-     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
-       return app.add_option_function<double>(n, [&o](const double& v) { o.mass_flow = v; }, h)
-           ->check(number_in(config::shared_ranges::mass_flow(), "kg/s"));
-     },
-     [](const config::Overrides& o) { return o.mass_flow ? text(*o.mass_flow) : std::string(); }},
-    {OverrideFlag::seed, "--seed", "N", "the DEM's random seed instead of dem.seed (a replica of the same case)",
-     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
-       return app.add_option_function<long long>(n, [&o](const long long& v) { o.seed = static_cast<std::uint64_t>(v); }, h)
-           ->check(integer_in(0, config::shared_ranges::kSeedMax));
-     },
-     [](const config::Overrides& o) { return o.seed ? text(static_cast<long long>(*o.seed)) : std::string(); }},
-    {OverrideFlag::wall_rolling_model, "--wall-rolling-model", "relative|liggghts",
-     "contacts.wall_rolling_model instead of the case's (liggghts: LIGGGHTS' form)",
-     [](CommandLine& app, config::Overrides& o, const char* n, const char* h) {
-       return app
-           .add_option_function<std::string>(
-               n,
-               [&o](const std::string& v) {
-                 o.wall_rolling = v == "relative" ? dem::WallRolling::relative : dem::WallRolling::liggghts;
-               },
-               h)
-           ->check(CLI::IsMember({"relative", "liggghts"}));
-     },
-     [](const config::Overrides& o) { return o.wall_rolling ? std::string(text(*o.wall_rolling)) : std::string(); }},
+    {"--threads", "N", "dem run", "DEM threads (0 = all cores) instead of dem.run.threads", "dem.run.threads"},
+    {"--duration", "SECONDS", "dem", "seconds of spin-up instead of dem.run.duration", "dem.run.duration"},
+    {"--speed-rpm", "RPM", "run", "the receiver's speed (or, without one, the DEM drum's), rpm", nullptr,
+     &config::Overrides::speed_rpm, config::shared_ranges::speed_rpm(), "rpm"},
+    {"--mass-flow", "KG_S", "run", "the receiver's mass flow (or, without one, the DEM feeder's), kg/s", nullptr,
+     &config::Overrides::mass_flow, config::shared_ranges::mass_flow(), "kg/s"},
+    {"--seed", "N", "run", "the DEM's random seed instead of dem.seed (a replica of the same case)", "dem.seed"},
+    {"--wall-rolling-model", "relative|liggghts", "dem export-liggghts",
+     "dem.contacts.wall_rolling_model instead of the case's (liggghts: LIGGGHTS' form)",
+     "dem.contacts.wall_rolling_model"},
+    {"--set", "KEY=VALUE", "dem run sweep thermal",
+     "any case key, as its dotted path (--set thermal.flux.q_film=3e5); repeatable"},
 };
+
+bool takes(const Flag& f, const std::string& command) {
+  std::istringstream words(f.commands);
+  for (std::string w; words >> w;)
+    if (w == command) return true;
+  return false;
+}
+
+// The row whose own flag sets `key`, or nullptr (then --set does).
+const Flag* flag_of_key(const std::string& key) {
+  for (const Flag& f : kFlags)
+    if (f.key && key == f.key) return &f;
+  return nullptr;
+}
 }  // namespace
 
-void add_override_flags(CommandLine& app, config::Overrides& o, std::initializer_list<OverrideFlag> which) {
-  for (const OverrideFlag w : which)
-    for (const Flag& f : kFlags)
-      if (f.which == w) f.add(app, o, f.name, f.help)->option_text(f.value);
+void add_override_flags(CommandLine& app, config::Overrides& o, const std::string& command) {
+  for (const Flag& f : kFlags) {
+    if (!takes(f, command)) continue;
+    CLI::Option* opt = nullptr;
+    if (f.point) {
+      const auto member = f.point;
+      opt = app.add_option_function<double>(
+                   f.name, [&o, member](const double& v) { o.*member = v; }, f.help)
+                ->check(number_in(f.range, f.unit));
+    } else if (f.key) {
+      const std::string key = f.key;
+      opt = app.add_option_function<std::string>(
+          f.name, [&o, key](const std::string& v) { o.keys[key] = v; }, f.help);
+    } else {
+      opt = app.add_option_function<std::vector<std::string>>(
+                   f.name,
+                   [&o](const std::vector<std::string>& sets) {
+                     for (const std::string& s : sets) {
+                       const std::size_t eq = s.find('=');
+                       o.keys[s.substr(0, eq)] = s.substr(eq + 1);
+                     }
+                   },
+                   f.help)
+                ->check(CLI::Validator(
+                    [](std::string& s) {
+                      return s.find('=') == std::string::npos || s.front() == '='
+                                 ? "'" + s + "' is not KEY=VALUE (e.g. thermal.T_in=900)"
+                                 : std::string();
+                    },
+                    "KEY=VALUE"))
+                ->allow_extra_args(false);
+    }
+    opt->option_text(f.value);
+  }
 }
 
 Args override_args(const config::Overrides& o) {
   Args a;
   for (const Flag& f : kFlags) {
-    const std::string v = f.given(o);
-    if (!v.empty()) a.insert(a.end(), {f.name, v});
+    if (f.point && o.*f.point) a.insert(a.end(), {f.name, text(*(o.*f.point))});
+    if (f.key && o.sets(f.key)) a.insert(a.end(), {f.name, o.keys.at(f.key)});
   }
+  for (const auto& [key, value] : o.keys)
+    if (!flag_of_key(key)) a.insert(a.end(), {"--set", key + "=" + value});
   return a;
 }
 
@@ -99,6 +119,13 @@ std::vector<std::string> override_flag_names() {
   std::vector<std::string> names;
   for (const Flag& f : kFlags) names.push_back(f.name);
   return names;
+}
+
+std::vector<std::string> override_keys(const std::string& command) {
+  std::vector<std::string> keys;
+  for (const Flag& f : kFlags)
+    if (f.key && takes(f, command)) keys.push_back(f.key);
+  return keys;
 }
 
 std::string flags_text(const config::Overrides& o) {

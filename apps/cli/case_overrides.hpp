@@ -1,9 +1,10 @@
 #pragma once
-// Command-line values that replace a case's (--threads, --duration, --speed-rpm,
-// --mass-flow, --seed, --wall-rolling-model) pass the same checks as the case file's values
-// (config/case_checks), before any work; a refusal names the flags. A child process
-// (`centrec sweep`'s points, `centrec run --replicas`) is given them by override_args.
-#include <initializer_list>
+// Command-line values that replace a case's: each flag declared once, as a row of the table in
+// case_overrides.cpp (its name, the case key it sets or the operating point, the commands that
+// take it, its help). A case key given on the command line (--threads, --seed, --set KEY=VALUE)
+// is written into the case and read again by the key's own reader (config::with_overrides),
+// before any work; a refusal names the flags. A child process (`centrec sweep`'s points,
+// `centrec run --replicas`) is given them by override_args.
 #include <string>
 #include <vector>
 
@@ -12,26 +13,29 @@
 
 namespace centrec::cli {
 
-// The flags that replace a case value, each declared once (name, help, range, the
-// config::Overrides member it sets) in case_overrides.cpp.
-enum class OverrideFlag { threads, duration, speed_rpm, mass_flow, seed, wall_rolling_model };
+// Declares on `app` every override flag that `command` ("dem", "run", ...) takes, each
+// setting its part of `o` when given.
+void add_override_flags(CommandLine& app, config::Overrides& o, const std::string& command);
 
-// Declares `which` on `app`, each setting its member of `o` when given.
-void add_override_flags(CommandLine& app, config::Overrides& o, std::initializer_list<OverrideFlag> which);
-
-// {"--threads", "2", "--duration", "0.1"}: the given overrides as arguments, each value
-// written so that it reads back as itself.
+// {"--threads", "2", "--set", "thermal.T_in=900"}: the given overrides as arguments (a key
+// with a flag of its own by that flag, any other by --set), each value written so that it
+// reads back as itself.
 Args override_args(const config::Overrides& o);
-// Every override flag's name ("--threads", ...): what a child's command line sets anew.
+// Every override flag's name ("--threads", ..., "--set"): what a child's command line sets anew.
 std::vector<std::string> override_flag_names();
+
+// The case keys that `command`'s own flags set ("dem.run.threads", ...; --set's aside).
+std::vector<std::string> override_keys(const std::string& command);
 
 // "--threads 2 --duration 0.1": the overrides as they were given.
 std::string flags_text(const config::Overrides& o);
 
-// config::with_overrides, its ConfigError turned into a UsageError naming the flags.
+// The case with the overrides' keys (config::with_overrides), its ConfigError turned into a
+// UsageError naming the flags.
 config::CaseFile checked_overrides(const config::CaseFile& cf, const config::Overrides& o);
 
-// The DEM a coupled run simulates with the overrides, checked (config::dem_run_problem).
+// The DEM a run simulates with the overrides' operating point, checked
+// (config::dem_run_problem); `cf` has the overrides' keys already (checked_overrides).
 config::DemCase checked_dem(const config::CaseFile& cf, const config::Overrides& o);
 
 }  // namespace centrec::cli

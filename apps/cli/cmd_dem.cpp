@@ -26,7 +26,7 @@ namespace {
 struct DemOptions {
   std::string case_path, out_dir = "out/dem", resume_dir;
   bool no_plots = false, overwrite = false, out_given = false;
-  config::Overrides overrides;  // --threads, --duration, --wall-rolling-model
+  config::Overrides overrides;  // --threads, --duration, --wall-rolling-model, --set
   DemEngineOptions engine;
 };
 
@@ -42,8 +42,8 @@ void print_dem_help(const CommandLine& app) {
       "and the paper's figures (apps/plot_dem.py): fig2_mass_flow.png (outlet flow vs time),\n"
       "fig3_film_thickness.png (thickness along z), fig6_velocity_profiles.png (the nine\n"
       "profiles) and solid_fraction.png (--no-plots: none).\n"
-      "--threads, --duration and --wall-rolling-model enter the resolved configuration in the outputs\n"
-      "and the checkpoint.\n"
+      "--threads, --duration, --wall-rolling-model and --set enter the resolved configuration in the\n"
+      "outputs and the checkpoint.\n"
       "--engine liggghts runs the same case on LIGGGHTS 3.8 (`mpirun -np N liggghts`, N = --ranks;\n"
       "--mpirun srun for a cluster launcher) in DIR/liggghts and reads its dumps into the same\n"
       "samplers and outputs; settings LIGGGHTS cannot express are refused (see export-liggghts).\n\n"
@@ -62,20 +62,22 @@ void declare(CommandLine& app, DemOptions& o) {
   app.add_option("--out", o.out_dir, "the run's folder (default out/dem)")->option_text("DIR");
   app.add_option("--resume", o.resume_dir, "continue the stopped or killed run in DIR from its checkpoint")
       ->option_text("DIR");
-  add_override_flags(app, o.overrides, {OverrideFlag::threads, OverrideFlag::duration});
+  add_override_flags(app, o.overrides, "dem");
   app.add_flag("--no-plots", o.no_plots, "draw no figures");
   add_overwrite_flag(app, o.overwrite);
   add_engine_options(app, o.engine);
-  add_override_flags(app, o.overrides, {OverrideFlag::wall_rolling_model});
 }
 
 // Checks what `declare` read; throws UsageError.
 void check(DemOptions& o) {
   if (!o.resume_dir.empty()) {
     if (o.engine.engine != "centrec") throw UsageError("--resume is for the native engine (centrec) only");
-    if (o.overrides.duration)
-      throw UsageError("--duration cannot change a resumed run: it continues to the run.duration stored in " +
-                       io::checkpoint_path(o.resume_dir) + " (the first run's --duration, if it had one)");
+    // A resumed run continues the case it started with; only the thread count may change.
+    for (const auto& [key, value] : o.overrides.keys)
+      if (key != "dem.run.threads")
+        throw UsageError(key + " cannot change a resumed run: it continues to the " + key.substr(key.find('.') + 1) +
+                         " stored in " + io::checkpoint_path(o.resume_dir) +
+                         " (the first run's --duration or --set, if it had one)");
     if (o.out_given && std::filesystem::path(o.out_dir).lexically_normal() !=
                            std::filesystem::path(o.resume_dir).lexically_normal())
       throw UsageError("--resume " + o.resume_dir + " continues the run in that folder; --out " + o.out_dir +
@@ -106,12 +108,11 @@ int cmd_dem(const Args& args) {
   config::CaseFile cf = ck ? config::read_case_text(ck->resolved_yaml, ck->case_path) : config::read_case_file(opt.case_path);
   if (!cf.dem) throw std::invalid_argument(cf.path + " has no `dem:` section");
   if (ck && !opt.case_path.empty()) {
-    // The stored case holds the first run's --duration, --threads and --wall-rolling-model:
-    // compare with those.
+    // The stored case holds the first run's values of `dem`'s own flags (--duration, --threads,
+    // --wall-rolling-model): compare the case file with those taken from it (a first run with
+    // --set resumes without the case file).
     config::Overrides stored;
-    stored.duration = cf.dem->run.duration;
-    stored.threads = cf.dem->scene.threads;
-    stored.wall_rolling = cf.dem->scene.wall_rolling;
+    for (const std::string& key : override_keys("dem")) stored.keys[key] = config::resolved_value(cf, key);
     if (config::with_overrides(config::read_case_file(opt.case_path), stored).resolved_yaml != cf.resolved_yaml)
       throw std::invalid_argument(opt.case_path + " does not match the case stored in " +
                                   io::checkpoint_path(opt.resume_dir) +

@@ -27,9 +27,9 @@ int cmd_export_liggghts(const Args& args) {
   CommandLine app("export-liggghts");
   app.add_option("CASE", case_path)->required();
   app.add_option("--out", out_dir)->required();
-  add_override_flags(app, overrides, {OverrideFlag::wall_rolling_model});
+  add_override_flags(app, overrides, "export-liggghts");
   app.read(args);
-  const config::CaseFile cf = config::read_case_file(case_path);
+  const config::CaseFile cf = checked_overrides(config::read_case_file(case_path), overrides);
   if (!cf.dem) throw std::invalid_argument(case_path + " has no `dem:` section");
   // The `dem:` section as given (the deck derives nothing from `receiver:`), with the override.
   const config::DemCase dc = config::effective_dem(*cf.dem, nullptr, overrides);

@@ -50,7 +50,8 @@ void print_run_help(const CommandLine& app) {
       "differ), whose dem.h5 gives the film (a mismatch is refused, naming the keys).\n"
       "--speed-rpm and --mass-flow replace the receiver's operating point (or\n"
       "the DEM drum's, without a receiver); `centrec sweep` uses them. --seed replaces\n"
-      "dem.seed.\n"
+      "dem.seed. --set KEY=VALUE sets any case key (thermal.flux.q_film=3e5, thermal.T_in=900):\n"
+      "the value passes the key's own checks and the resolved configuration in the outputs holds it.\n"
       "--replicas N runs the whole chain N times, with DEM seeds dem.seed, dem.seed + 1, ...,\n"
       "into DIR/replica_<k>/ (as many at a time as there are threads, the threads shared out),\n"
       "and writes DIR/summary.json with the mean and standard deviation over the seeds of T_out,\n"
@@ -76,9 +77,10 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
                  const config::CaseFile& cf, const runs::RunOptions& o, int replicas, bool no_plots, bool overwrite) {
   if (!(cf.dem && cf.thermal && cf.thermal->film_source.from_dem()))
     throw UsageError(case_path + ": --replicas repeats the DEM with other seeds, but this case has no DEM film");
-  const long long base = static_cast<long long>(o.overrides.seed ? *o.overrides.seed : cf.dem->scene.seed);
+  // `cf` holds the overrides' keys: its seed and threads are the command line's when given.
+  const long long base = static_cast<long long>(cf.dem->scene.seed);
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const int threads = o.overrides.threads && *o.overrides.threads > 0 ? *o.overrides.threads : cores;
+  const int threads = o.overrides.sets("dem.run.threads") && cf.dem->scene.threads > 0 ? cf.dem->scene.threads : cores;
   const int parallel = std::min(replicas, threads);
   const int per_child = std::max(1, threads / parallel);
   const io::OutputFolder out(out_dir);
@@ -100,8 +102,8 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
     job.argv.insert(job.argv.end(), common.begin(), common.end());
     job.argv.insert(job.argv.end(), {"--out", dir, "--cache", o.cache_dir});
     config::Overrides replica = o.overrides;
-    replica.seed = static_cast<std::uint64_t>(base + k);
-    replica.threads = per_child;
+    replica.keys["dem.seed"] = std::to_string(base + k);
+    replica.keys["dem.run.threads"] = std::to_string(per_child);
     const Args flags = override_args(replica);
     job.argv.insert(job.argv.end(), flags.begin(), flags.end());
     if (no_plots || k > 0) job.argv.push_back("--no-plots");  // replica 0 draws the figures
@@ -148,8 +150,7 @@ int cmd_run(const Args& args) {
   CommandLine app("run");
   app.add_option("CASE", case_path)->required();
   app.add_option("--out", out_dir, "the run's folder (created)")->required()->option_text("DIR");
-  add_override_flags(app, o.overrides,
-                     {OverrideFlag::speed_rpm, OverrideFlag::mass_flow, OverrideFlag::threads, OverrideFlag::seed});
+  add_override_flags(app, o.overrides, "run");
   app.add_option("--replicas", replicas, "run the chain with N DEM seeds (seed, seed + 1, ...) and their spread")
       ->check(integer_in(1, 64))
       ->option_text("N");
@@ -168,8 +169,10 @@ int cmd_run(const Args& args) {
   app.read(args);
   const bool plots = !no_plots;
   if (o.cache_dir.empty()) o.cache_dir = parent_of(out_dir) + "/dem-cache";
-  const config::CaseFile cf = config::read_case_file(case_path);
   const config::Overrides& overrides = o.overrides;
+  const config::CaseFile given = config::read_case_file(case_path);
+  runs::check_run_options(given, o);
+  const config::CaseFile cf = checked_overrides(given, overrides);
   if (cf.dem && cf.thermal && cf.thermal->film_source.from_dem()) checked_dem(cf, overrides);
   if (replicas > 1 && !o.dem_from.empty())
     throw UsageError("--replicas runs the DEM with other seeds; --dem-from takes one earlier run: give one of them");

@@ -48,12 +48,12 @@ void print_sweep_help(const CommandLine& app) {
 // point runs with --allow-unsteady: a point whose DEM did not reach steady flow is reported
 // as such in the table rather than lost.
 ChildJob point_job(const std::string& exe, const std::string& case_path, const std::string& cache, const Point& p,
-                   bool allow_small_drum, int replicas, bool overwrite) {
+                   const config::Overrides& given, bool allow_small_drum, int replicas, bool overwrite) {
   io::ensure_directory(p.dir);
-  config::Overrides o;
+  config::Overrides o = given;
   o.speed_rpm = p.rpm;
   o.mass_flow = p.mdot;
-  o.threads = 1;
+  o.keys["dem.run.threads"] = "1";
   ChildJob job{{exe, "run", case_path, "--out", p.dir, "--cache", cache}, p.dir + "/run.log"};
   const Args flags = override_args(o);
   job.argv.insert(job.argv.end(), flags.begin(), flags.end());
@@ -92,12 +92,14 @@ int cmd_sweep(const Args& args) {
   app.add_flag("--allow-small-drum", allow_small_drum,
                "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
   add_overwrite_flag(app, overwrite);
+  config::Overrides overrides;  // --set: the same at every point
+  add_override_flags(app, overrides, "sweep");
   if (wants_help(args)) {
     print_sweep_help(app);
     return 0;
   }
   app.read(args);
-  const config::CaseFile cf = config::read_case_file(case_path);
+  const config::CaseFile cf = checked_overrides(config::read_case_file(case_path), overrides);
   if (!cf.sweep) throw std::invalid_argument(case_path + " has no `sweep:` section (speed_rpm, mass_flow lists)");
   if (cf.dem) {  // the drum's size does not depend on the swept speed and flow
     config::DemCase dem = *cf.dem;
@@ -121,7 +123,7 @@ int cmd_sweep(const Args& args) {
         throw std::invalid_argument(case_path + ": the sweep grid lists the point " + point_name(points[i].rpm, points[i].mdot) +
                                     " twice (a speed or a mass flow repeated)");
   std::vector<ChildJob> jobs;
-  for (const Point& p : points) jobs.push_back(point_job(exe, case_path, cache, p, allow_small_drum, replicas, overwrite));
+  for (const Point& p : points) jobs.push_back(point_job(exe, case_path, cache, p, overrides, allow_small_drum, replicas, overwrite));
   const auto t0 = std::chrono::steady_clock::now();
   std::size_t done = 0;
   run_child_jobs(

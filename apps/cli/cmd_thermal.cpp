@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cli/case_overrides.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
 #include "config/case_thermal.hpp"
@@ -36,8 +37,11 @@ int cmd_thermal(const Args& args) {
   app.add_option("--out", out_dir)->required();
   bool overwrite = false;
   add_overwrite_flag(app, overwrite);
+  config::Overrides overrides;  // --set
+  add_override_flags(app, overrides, "thermal");
   app.read(args);
-  const config::ThermalCase c = config::read_thermal_case(case_path);
+  const config::ThermalCase c =
+      config::thermal_case_of(checked_overrides(config::read_case_file(case_path), overrides));
   const io::OutputFolder out(out_dir);
   const io::RunFolderClaim claim(out_dir, "centrec thermal " + case_path, folder_use(overwrite));
   const auto t0 = std::chrono::steady_clock::now();
@@ -47,16 +51,17 @@ int cmd_thermal(const Args& args) {
   io::write_text_atomically(out_dir + "/along_z.csv", runs::along_z_csv(r));
   nlohmann::json summary = runs::thermal_summary(c, r);
   summary["wall_time_s"] = seconds;
+  if (!flags_text(overrides).empty()) summary["command_line_overrides"] = flags_text(overrides);
   io::write_json_file(out_dir + "/summary.json", summary);
   const auto& b = r.balance;
   std::printf("centrec thermal %s: %s %dx%d, T_in %.2f K -> T_out %.2f K (%.2f C), efficiency %s, mdot %.4g kg/s\n",
               c.path.c_str(), c.grid.lumped ? "1D" : "2D", r.op->grid().nz, r.op->grid().nxi, c.model.T_in, b.T_out,
               b.T_out - 273.15, runs::efficiency_text(b.efficiency).c_str(), b.mass_flow);
-  std::printf("  powers (W): incident %.6g, absorbed %.6g, emitted %.6g, convected %.6g, wall %.6g, carried %.6g; "
-              "balance residual %.2e of %s\n",
-              b.incident, b.absorbed, b.emitted, b.convected, b.wall, b.carried,
-              b.residual / thermal::film_balance_scale(b),
-              b.absorbed >= thermal::film_balance_scale(b) ? "absorbed" : "the film's largest power");
+  std::printf(
+      "  powers (W): incident %.6g, absorbed %.6g, emitted %.6g, convected %.6g, wall %.6g, carried %.6g; "
+      "balance residual %.2e of %s\n",
+      b.incident, b.absorbed, b.emitted, b.convected, b.wall, b.carried, b.residual / thermal::film_balance_scale(b),
+      b.absorbed >= thermal::film_balance_scale(b) ? "absorbed" : "the film's largest power");
   runs::print_receiver_report(c, r);
   std::printf("  k_eff film mean %.4g W/(m K); steady solve %.3f s (%d Newton, %ld BDF steps)%s; total %.3f s\n",
               summary["k_eff"]["film_mean"]["k_eff"].get<double>(), r.steady_seconds, r.steady.newton_iterations,

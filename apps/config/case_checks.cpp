@@ -21,6 +21,13 @@ std::string g(double v) {
 }
 }  // namespace
 
+bool Overrides::any_dem() const {
+  if (any_operating_point()) return true;
+  for (const auto& [key, value] : keys)
+    if (key.rfind("dem.", 0) == 0 || key.rfind("receiver.", 0) == 0) return true;
+  return false;
+}
+
 ReceiverCase effective_receiver(const ReceiverCase& r, const Overrides& o) {
   ReceiverCase e = r;
   if (o.speed_rpm) e.op.omega = coupling::rpm_to_rad_per_s(*o.speed_rpm);
@@ -30,10 +37,6 @@ ReceiverCase effective_receiver(const ReceiverCase& r, const Overrides& o) {
 
 DemCase effective_dem(const DemCase& dem, const ReceiverCase* receiver, const Overrides& o) {
   DemCase d = dem;
-  if (o.threads) d.scene.threads = *o.threads;
-  if (o.duration) d.run.duration = *o.duration;
-  if (o.seed) d.scene.seed = *o.seed;
-  if (o.wall_rolling) d.scene.wall_rolling = *o.wall_rolling;
   if (receiver) {
     apply_receiver(effective_receiver(*receiver, o), d, o.any_operating_point());
   } else {

@@ -4,6 +4,7 @@
 // `centrec dem` and `centrec run` refuse, and the commands call them again on the DEM they
 // will actually run (receiver derivation and command-line values applied).
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -15,26 +16,27 @@
 
 namespace centrec::config {
 
-// Command-line values that replace the case's (`centrec dem`, `centrec run`,
-// `centrec export-liggghts`; their flags: apps/cli/case_overrides.cpp); unset = the
-// case's. effective_dem is the one place they are applied.
+// Command-line values that replace the case's (`centrec dem`, `run`, `sweep`, `thermal`,
+// `export-liggghts`; their flags: apps/cli/case_overrides.cpp); unset = the case's.
+// Case keys (--threads, --seed, --set KEY=VALUE, ...) are written into the case's resolved
+// configuration and read again (with_overrides, config/case_file.hpp), so the key's own
+// reader checks them and the outputs record them. The operating point depends on the case
+// (the receiver's, or the DEM drum's without one): effective_dem applies it.
 struct Overrides {
-  std::optional<int> threads;       // dem.run.threads
-  std::optional<double> duration;   // dem.run.duration, s
+  std::map<std::string, std::string> keys;  // dotted key path -> the value as YAML scalar text
   std::optional<double> speed_rpm;  // the receiver's speed, or the DEM drum's without a receiver
   std::optional<double> mass_flow;  // the receiver's mass flow, or the DEM feeder's, kg/s
-  std::optional<std::uint64_t> seed;  // dem.seed (a replica of the same case)
-  std::optional<dem::WallRolling> wall_rolling;  // dem.contacts.wall_rolling_model
   bool any_operating_point() const { return speed_rpm || mass_flow; }
-  // Any value that changes or runs the DEM (all of them: a case without a DEM takes none).
-  bool any() const { return threads || duration || speed_rpm || mass_flow || seed || wall_rolling; }
+  bool sets(const std::string& key) const { return keys.count(key) > 0; }
+  // Any value that changes or runs the DEM (a case without a DEM takes none).
+  bool any_dem() const;
 };
 
 // The receiver with the overrides' operating point.
 ReceiverCase effective_receiver(const ReceiverCase& r, const Overrides& o);
 
-// The DEM a run simulates: `dem` as given, the drum and feed the receiver derives (eqs 1-3;
-// see apply_receiver), then the overrides. Throws std::invalid_argument when the receiver
+// The DEM a run simulates: `dem` as given (case keys overridden already, with_overrides), the
+// drum and feed the receiver derives (eqs 1-3; see apply_receiver), then the operating point. Throws std::invalid_argument when the receiver
 // and the DEM disagree (tilt, particle diameter).
 DemCase effective_dem(const DemCase& dem, const ReceiverCase* receiver, const Overrides& o);
 

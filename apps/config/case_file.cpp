@@ -1,5 +1,6 @@
 #include "config/case_file.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
@@ -17,10 +18,12 @@ CaseFile read_case(MapReader root, const std::string& path) {
   root.known_keys({"title", "description", "dem", "receiver", "film", "thermal", "sweep"});
   c.title = root.string("title", "", "a one-line name of the case, echoed into the outputs");
   root.string("description", "", "free text about the case");
-  if (root.has("dem")) c.dem = read_dem_case(root.child("dem", "the DEM of the drum or slice (`centrec dem`, the DEM stage of `run`)"));
+  if (root.has("dem"))
+    c.dem = read_dem_case(root.child("dem", "the DEM of the drum or slice (`centrec dem`, the DEM stage of `run`)"));
   if (root.has("receiver")) {
     if (!c.dem) root.fail("receiver", "a receiver is simulated through a scaled-down `dem:` section; add one");
-    c.receiver = read_receiver(root.child("receiver", "the full-size receiver a coupled run scales the film to"), root.child("dem"));
+    c.receiver = read_receiver(root.child("receiver", "the full-size receiver a coupled run scales the film to"),
+                               root.child("dem"));
   }
   if (c.dem) {
     // What the DEM commands check before they start, on the drum they would simulate.
@@ -42,12 +45,15 @@ CaseFile read_case(MapReader root, const std::string& path) {
     c.thermal = std::move(t);
   }
   if (c.dem && c.thermal && c.thermal->film_source.from_dem())
-    if (const auto p = coupled_run_problem(*c.dem, *c.thermal, c.receiver ? &*c.receiver : nullptr)) root.fail_path(p->key, p->message);
+    if (const auto p = coupled_run_problem(*c.dem, *c.thermal, c.receiver ? &*c.receiver : nullptr))
+      root.fail_path(p->key, p->message);
   if (root.has("sweep") && !c.dem)
     root.fail("sweep", "grids speed x mass flow through the DEM; this case has no dem: section to run them on");
-  if (root.has("sweep")) c.sweep = read_sweep(root.child("sweep", "the operating map of `centrec sweep`: speed x mass flow"));
+  if (root.has("sweep"))
+    c.sweep = read_sweep(root.child("sweep", "the operating map of `centrec sweep`: speed x mass flow"));
   if (c.sweep && c.dem)
-    if (const auto p = sweep_problem(*c.dem, c.receiver ? &*c.receiver : nullptr, *c.sweep)) root.fail_path(p->key, p->message);
+    if (const auto p = sweep_problem(*c.dem, c.receiver ? &*c.receiver : nullptr, *c.sweep))
+      root.fail_path(p->key, p->message);
   root.finish();
   c.resolved_yaml = root.resolved_text();
   return c;
@@ -82,22 +88,37 @@ CaseFile read_case_recording(const std::string& text, const std::string& path, s
 }
 
 CaseFile with_overrides(const CaseFile& cf, const Overrides& o) {
-  if (!o.threads && !o.duration && !o.seed && !o.wall_rolling) return cf;
+  if (o.keys.empty()) return cf;
   YAML::Node root = YAML::Load(cf.resolved_yaml);
-  YAML::Node dem = root["dem"];
-  if (o.threads) dem["run"]["threads"] = *o.threads;
-  if (o.duration) {
-    std::ostringstream v;
-    v.precision(10);
-    v << *o.duration;
-    dem["run"]["duration"] = v.str();
+  for (const auto& [key, value] : o.keys) {
+    std::vector<std::string> parts;
+    std::stringstream path(key);
+    for (std::string part; std::getline(path, part, '.');) parts.push_back(part);
+    if (parts.size() < 2 || std::find(parts.begin(), parts.end(), "") != parts.end())
+      throw ConfigError(key + ": not a key path of a case (section.key, e.g. dem.run.threads)");
+    if (!root[parts[0]].IsDefined())
+      throw ConfigError(key + ": the case " + cf.path + " has no `" + parts[0] + ":` section to set it in");
+    YAML::Node node = root;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+      if (node[parts[i]].IsDefined() && !node[parts[i]].IsMap())
+        throw ConfigError(key + ": " + parts[i] + " is not a section of keys in " + cf.path);
+      node.reset(node[parts[i]]);
+    }
+    node[parts.back()] = value;
   }
-  if (o.seed) dem["seed"] = *o.seed;
-  if (o.wall_rolling)
-    dem["contacts"]["wall_rolling_model"] = *o.wall_rolling == dem::WallRolling::relative ? "relative" : "liggghts";
   YAML::Emitter e;
   e << root;
   return read_case_text(e.c_str(), cf.path);
+}
+
+std::string resolved_value(const CaseFile& cf, const std::string& dotted) {
+  YAML::Node node = YAML::Load(cf.resolved_yaml);
+  std::stringstream path(dotted);
+  for (std::string part; std::getline(path, part, '.');) {
+    if (!node.IsMap() || !node[part].IsDefined()) return "";
+    node.reset(node[part]);
+  }
+  return node.IsScalar() ? node.Scalar() : "";
 }
 
 }  // namespace centrec::config

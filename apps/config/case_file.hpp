@@ -36,10 +36,15 @@ CaseFile read_case_text(const std::string& text, const std::string& path);
 // ConfigError the keys read before it stay in `keys`.
 CaseFile read_case_recording(const std::string& text, const std::string& path, std::vector<KeyRecord>& keys);
 
-// The case with the overrides that are keys of its `dem:` section (run.threads,
-// run.duration, seed, contacts.wall_rolling_model) written into it, read again (and so
-// checked again): the resolved configuration that outputs and checkpoints record holds
-// what the run actually does (effective_dem applies them to the DEM). Throws ConfigError.
+// The case with the overrides' keys (dotted paths into any section the case has) written
+// into its resolved configuration and read again, so every value passes its key's own checks
+// and the resolved configuration that outputs and checkpoints record holds what the run does
+// (the operating point is effective_dem's). Throws ConfigError (a key of a section the case
+// lacks, an unknown key, a value out of its range).
 CaseFile with_overrides(const CaseFile& cf, const Overrides& o);
+
+// The value of a dotted key path in the case's resolved configuration, as its text ("" when
+// the configuration does not hold it).
+std::string resolved_value(const CaseFile& cf, const std::string& dotted);
 
 }  // namespace centrec::config

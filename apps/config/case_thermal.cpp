@@ -467,7 +467,11 @@ std::string case_directory(const std::string& case_path) {
 
 ThermalCase read_thermal_case(const std::string& path) {
   // The one case reader (validate's), so `thermal` accepts and refuses what `validate` does.
-  const CaseFile cf = read_case_file(path);
+  return thermal_case_of(read_case_file(path));
+}
+
+ThermalCase thermal_case_of(const CaseFile& cf) {
+  const std::string& path = cf.path;
   if (!cf.thermal)
     throw ConfigError(path + ": no thermal: or film: section: `centrec thermal` solves a film's energy equation");
   if (cf.thermal->film_source.from_dem())

@@ -49,5 +49,9 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
 std::string case_directory(const std::string& case_path);
 // Reads a whole thermal case file; throws ConfigError on the first problem.
 ThermalCase read_thermal_case(const std::string& path);
+struct CaseFile;
+// The thermal case of a case file read already (with command-line values, say); throws
+// ConfigError when it has none or its film comes from its DEM (`centrec run`).
+ThermalCase thermal_case_of(const CaseFile& cf);
 
 }  // namespace centrec::config

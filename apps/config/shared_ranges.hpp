@@ -1,8 +1,8 @@
 #pragma once
 // The ranges of the case values that more than one place reads: the operating point (receiver,
-// sweep grid, the --speed-rpm and --mass-flow flags) and the run values the flags replace
-// (--threads, --duration, --seed). The case readers and cli/case_overrides.cpp check against
-// these, so a flag accepts exactly what the key accepts.
+// sweep grid, the --speed-rpm and --mass-flow flags, cli/case_overrides.cpp) and the run values
+// the flags --threads, --duration and --seed set (their keys' readers check them, so a flag
+// accepts exactly what the key accepts).
 #include "config/strict_yaml.hpp"
 
 namespace centrec::config::shared_ranges {

@@ -57,19 +57,27 @@ const std::vector<RunOptionFlag>& run_option_flags() {
   return flags;
 }
 
-CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o) {
+void check_run_options(const config::CaseFile& cf, const RunOptions& o) {
   if (!cf.thermal) throw std::invalid_argument(cf.path + ": a coupled run needs a `thermal:` section");
-  CoupledRun r;
-  r.thermal = *cf.thermal;
-  if (!o.dem_from.empty() && (!r.film_from_dem() || o.overrides.any_operating_point() || o.overrides.seed))
+  const bool from_dem = cf.thermal->film_source.from_dem();
+  if (!o.dem_from.empty() && (!from_dem || o.overrides.any_operating_point() || o.overrides.sets("dem.seed")))
     throw std::invalid_argument(cf.path +
                                 ": --dem-from takes the film of an earlier DEM run as it ran; it goes with "
                                 "neither a case without a DEM film nor --speed-rpm, --mass-flow or --seed");
-  if (!r.film_from_dem() && o.overrides.any())
+  if (!from_dem && o.overrides.any_dem())
     throw std::invalid_argument(cf.path +
-                                ": the DEM's flags (--speed-rpm, --mass-flow, --seed, --threads) "
+                                ": the DEM's flags (--speed-rpm, --mass-flow, --seed, --threads, --set dem.*) "
                                 "change or run the DEM, but this case takes its film from " +
-                                r.thermal.film_source.text() + " (no DEM runs)");
+                                cf.thermal->film_source.text() + " (no DEM runs)");
+}
+
+CoupledRun run_coupled_case(const config::CaseFile& given, const RunOptions& o) {
+  check_run_options(given, o);
+  // The command line's case keys written into the case (the same case again when they are
+  // there already).
+  const config::CaseFile cf = config::with_overrides(given, o.overrides);
+  CoupledRun r;
+  r.thermal = *cf.thermal;
   if (r.film_from_dem()) {
     if (!cf.dem) throw std::invalid_argument(cf.path + ": give a `dem:` section or `film: {file: ...}`");
     effective_dem(cf, o, r);

@@ -25,7 +25,7 @@ namespace centrec::runs {
 
 struct RunOptions {
   std::string cache_dir;          // DEM cache root (CACHE/<key>/)
-  config::Overrides overrides;    // --threads, --speed-rpm, --mass-flow, --seed
+  config::Overrides overrides;    // --threads, --speed-rpm, --mass-flow, --seed, --set
   bool allow_small_drum = false;  // run a DEM drum below coupling::kMinimumDrumDiameterOverD
   bool allow_unsteady = false;    // use a film that is not steady or fails the flux closure
   std::string dem_from;           // a finished `centrec dem` run of the same DEM inputs: its dem.h5, no DEM run
@@ -68,5 +68,9 @@ struct CoupledRun {
 
 // Throws std::invalid_argument / std::runtime_error with a clear message on failure.
 CoupledRun run_coupled_case(const config::CaseFile& cf, const RunOptions& o);
+// What run_coupled_case refuses in its options before any work (the DEM's flags on a case
+// without a DEM film, --dem-from with a changed operating point or seed): throws
+// std::invalid_argument.
+void check_run_options(const config::CaseFile& cf, const RunOptions& o);
 
 }  // namespace centrec::runs

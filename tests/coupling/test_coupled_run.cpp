@@ -137,7 +137,7 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
   // bitwise the same at any thread count), so the cached DEM serves both.
   const CaseFile more_threads = edited_case(dir, "threads: 1", "threads: 2");
   RunOptions three_threads = o;
-  three_threads.overrides.threads = 3;
+  three_threads.overrides.keys["dem.run.threads"] = "3";
   for (const auto& [c, opt] : {std::pair<const CaseFile*, const RunOptions*>{&more_threads, &o}, {&cf, &three_threads}}) {
     const CoupledRun t = run_coupled_case(*c, *opt);
     std::printf("threads %s: cached %d, key %s (first %s)\n", c == &cf ? "--threads 3" : "2 in the case", t.dem_cached,
@@ -170,7 +170,7 @@ TEST(CoupledRun, SmallCaseRegressionCacheAndOutputs) {
       EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
     }
   }
-  given.overrides.seed = 7;
+  given.overrides.keys["dem.seed"] = "7";
   EXPECT_THROW(run_coupled_case(cf, given), std::invalid_argument);
 
   // Outputs: results.h5 with /film and /coupling, film.h5 reusable, summary figures.

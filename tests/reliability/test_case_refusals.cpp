@@ -248,8 +248,8 @@ TEST(CaseRefusals, AReceiverCaseReadsBackFromItsResolvedConfiguration) {
   EXPECT_EQ(config::read_case_text(cf.resolved_yaml, cf.path).resolved_yaml, cf.resolved_yaml);
 
   config::Overrides o;
-  o.threads = 2;
-  o.duration = 0.5;
+  o.keys["dem.run.threads"] = "2";
+  o.keys["dem.run.duration"] = "0.5";
   config::CaseFile with;
   ASSERT_NO_THROW(with = config::with_overrides(cf, o));
   const YAML::Node run = YAML::Load(with.resolved_yaml)["dem"]["run"];

@@ -45,8 +45,11 @@ TEST(CliUsage, MissingOutAndUnknownFlagsSayWhatIsWrong) {
 }
 
 TEST(CliUsage, NumericFlagsAreCheckedNotReplaced) {
-  for (const char* v : {"100000", "-7", "1.5", "abc", "1e3"})
-    expect_usage_error({"dem", kQuick, "--out", "x", "--threads", v}, "--threads");
+  // A flag that sets a key accepts what the key accepts in a case file (an integer may be
+  // written 1e3 there) and refuses the rest, naming the flag and the key.
+  for (const char* v : {"100000", "-7", "1.5", "abc", "1e4"})
+    expect_usage_error({"dem", kQuick, "--out", "x", "--threads", v}, "with --threads " + std::string(v) + ": ");
+  expect_usage_error({"dem", kQuick, "--threads", "1.5"}, "dem.run.threads = 1.5 must be an integer");
   expect_usage_error({"dem", kQuick, "--threads", "100000"}, "out of the allowed range [0, 1024]");
   for (const char* v : {"0", "-1", "nan", "inf", "abc"})
     expect_usage_error({"dem", kQuick, "--out", "x", "--duration", v}, "--duration");
@@ -57,7 +60,7 @@ TEST(CliUsage, NumericFlagsAreCheckedNotReplaced) {
     expect_usage_error({"run", kQuick, "--out", "x", "--mass-flow", v}, "--mass-flow");
   expect_usage_error({"run", kQuick, "--out", "x", "--threads", "-7"}, "--threads");
   // A duration the run cannot finish: refused with the reason, naming the flag.
-  expect_usage_error({"dem", kQuick, "--out", "x", "--duration", "1e12"}, "with --duration 1e+12: ");
+  expect_usage_error({"dem", kQuick, "--out", "x", "--duration", "1e12"}, "with --duration 1e12: ");
 }
 
 TEST(CliUsage, VersionAndUnknownCommands) {
@@ -169,5 +172,31 @@ TEST(CliUsage, RunningOutOfMemoryIsAnErrorNotACrash) {
   EXPECT_EQ(r.err.find("bad_alloc"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("terminate called"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/out")) << "the output folder the failed run created is left behind";
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliUsage, SetGivesAnyCaseKeyThroughItsOwnReader) {
+  // --set KEY=VALUE writes the key into the case, which is read again: the key's own range
+  // and spelling checks refuse a bad one, and the outputs hold the value that ran.
+  const std::string dir = temp_dir("cli_set");
+  const BinaryRun r = run_binary({"thermal", kThermal, "--out", dir + "/a", "--set", "thermal.T_in=900", "--set",
+                                  "thermal.flux.q_film=3e5"},
+                                 60.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("T_in 900.00 K"), std::string::npos) << r.out;
+  std::ifstream summary(dir + "/a/summary.json");
+  const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"T_in_K\": 900.0"), std::string::npos) << text.substr(0, 300);
+  EXPECT_NE(text.find("\"command_line_overrides\": \"--set thermal.T_in=900 --set thermal.flux.q_film=3e5\""),
+            std::string::npos);
+  expect_usage_error({"thermal", kThermal, "--out", dir + "/b", "--set", "thermal.T_inn=900"},
+                     "unknown key 'thermal.T_inn' (did you mean 'T_in'?)");
+  expect_usage_error({"thermal", kThermal, "--out", dir + "/b", "--set", "thermal.T_in=-900"},
+                     "thermal.T_in = -900 is out of the allowed range");
+  expect_usage_error({"thermal", kThermal, "--out", dir + "/b", "--set", "thermal.T_in"}, "is not KEY=VALUE");
+  expect_usage_error({"thermal", kThermal, "--out", dir + "/b", "--set", "dem.seed=3"}, "has no `dem:` section");
+  // `centrec dem --resume` continues the stored case: only the thread count may change.
+  expect_usage_error({"dem", "--resume", dir + "/none", "--set", "dem.seed=3"}, "dem.seed cannot change a resumed run");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/b"));
   std::filesystem::remove_all(dir);
 }

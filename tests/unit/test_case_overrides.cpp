@@ -1,50 +1,90 @@
 // The override flags (apps/cli/case_overrides.cpp), declared once: the arguments a child
 // process is given (override_args: `centrec sweep`'s points, `centrec run --replicas`) read
-// back into the same overrides, every value to the bit, and config::effective_dem applies
-// each of them, --wall-rolling-model included.
+// back into the same overrides, every value to the bit; config::with_overrides writes any
+// case key into the case and reads it again, so the key's own reader checks it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "cli/case_overrides.hpp"
 #include "cli/command_line.hpp"
 #include "config/case_checks.hpp"
+#include "config/case_file.hpp"
 
 using namespace centrec;
 
 TEST(CaseOverrides, ChildArgumentsReadBackAsTheOverrides) {
   config::Overrides o;
-  o.threads = 3;
-  o.duration = 0.1 + 0.2;  // 0.30000000000000004: needs all 17 digits
+  o.keys["dem.run.threads"] = "3";
+  o.keys["dem.seed"] = "2147483647";
+  o.keys["thermal.T_in"] = "900.5";
+  o.keys["thermal.flux.q_film"] = "0.30000000000000004";
   o.speed_rpm = 160.08;
   o.mass_flow = 1e-7;
-  o.seed = 2147483647u;
-  o.wall_rolling = dem::WallRolling::liggghts;
   const cli::Args args = cli::override_args(o);
   cli::CommandLine app("test");
   config::Overrides back;
-  cli::add_override_flags(
-      app, back,
-      {cli::OverrideFlag::threads, cli::OverrideFlag::duration, cli::OverrideFlag::speed_rpm,
-       cli::OverrideFlag::mass_flow, cli::OverrideFlag::seed, cli::OverrideFlag::wall_rolling_model});
+  cli::add_override_flags(app, back, "run");
   app.read(args);
-  EXPECT_EQ(back.threads, o.threads);
-  EXPECT_EQ(back.duration, o.duration);
+  EXPECT_EQ(back.keys, o.keys);
   EXPECT_EQ(back.speed_rpm, o.speed_rpm);
   EXPECT_EQ(back.mass_flow, o.mass_flow);
-  EXPECT_EQ(back.seed, o.seed);
-  EXPECT_EQ(back.wall_rolling, o.wall_rolling);
-  EXPECT_EQ(cli::override_flag_names().size() * 2, args.size());
+  // A key with a flag of its own goes by that flag, any other by --set.
   EXPECT_EQ(cli::flags_text(o),
-            "--threads 3 --duration 0.30000000000000004 --speed-rpm 160.08 --mass-flow 1e-07 "
-            "--seed 2147483647 --wall-rolling-model liggghts");
+            "--threads 3 --speed-rpm 160.08 --mass-flow 1e-07 --seed 2147483647 "
+            "--set thermal.T_in=900.5 --set thermal.flux.q_film=0.30000000000000004");
+  for (const char* name : {"--threads", "--speed-rpm", "--mass-flow", "--seed", "--set"})
+    EXPECT_NE(std::find(cli::override_flag_names().begin(), cli::override_flag_names().end(), name),
+              cli::override_flag_names().end())
+        << name;
 }
 
-TEST(CaseOverrides, EffectiveDemAppliesTheWallRollingModel) {
-  config::DemCase d;
-  ASSERT_EQ(d.scene.wall_rolling, dem::WallRolling::relative);
+TEST(CaseOverrides, EachCommandTakesItsOwnFlags) {
+  // `centrec dem` runs no thermal model and has no operating point of its own; `thermal` runs no DEM.
+  EXPECT_EQ(cli::override_keys("dem"),
+            (std::vector<std::string>{"dem.run.threads", "dem.run.duration", "dem.contacts.wall_rolling_model"}));
+  EXPECT_EQ(cli::override_keys("run"), (std::vector<std::string>{"dem.run.threads", "dem.seed"}));
+  EXPECT_TRUE(cli::override_keys("thermal").empty());
+  cli::CommandLine thermal("thermal");
   config::Overrides o;
-  o.wall_rolling = dem::WallRolling::liggghts;
-  EXPECT_EQ(config::effective_dem(d, nullptr, o).scene.wall_rolling, dem::WallRolling::liggghts);
-  EXPECT_EQ(config::effective_dem(d, nullptr, {}).scene.wall_rolling, dem::WallRolling::relative);
+  cli::add_override_flags(thermal, o, "thermal");
+  EXPECT_THROW(thermal.read({"--threads", "2"}), cli::UsageError);
+  EXPECT_THROW(thermal.read({"--set", "thermal.T_in"}), cli::UsageError);  // not KEY=VALUE
+  thermal.read({"--set", "thermal.T_in=900", "--set", "thermal.flux.q_film=3e5"});
+  EXPECT_EQ(o.keys.at("thermal.T_in"), "900");
+  EXPECT_EQ(o.keys.at("thermal.flux.q_film"), "3e5");
+}
+
+TEST(CaseOverrides, AKeyIsCheckedByItsOwnReader) {
+  const config::CaseFile cf = config::read_case_file(CENTREC_SOURCE_DIR "/cases/quickstart.yaml");
+  config::Overrides o;
+  o.keys["dem.contacts.wall_rolling_model"] = "liggghts";
+  o.keys["thermal.T_in"] = "900";
+  const config::CaseFile with = config::with_overrides(cf, o);
+  EXPECT_EQ(cf.dem->scene.wall_rolling, dem::WallRolling::relative);
+  EXPECT_EQ(with.dem->scene.wall_rolling, dem::WallRolling::liggghts);
+  EXPECT_EQ(with.thermal->model.T_in, 900.0);
+  EXPECT_EQ(config::resolved_value(with, "thermal.T_in"), "900");
+  EXPECT_EQ(config::resolved_value(with, "dem.contacts.wall_rolling_model"), "liggghts");
+  // Applied twice, the same case.
+  EXPECT_EQ(config::with_overrides(with, o).resolved_yaml, with.resolved_yaml);
+
+  const auto refusal = [&](const std::string& key, const std::string& value) {
+    config::Overrides bad;
+    bad.keys[key] = value;
+    try {
+      config::with_overrides(cf, bad);
+    } catch (const config::ConfigError& e) {
+      std::printf("%s=%s: %s\n", key.c_str(), value.c_str(), e.what());
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refusal("dem.run.threads", "5000").find("dem.run.threads"), std::string::npos);    // out of range
+  EXPECT_NE(refusal("dem.run.threads", "two").find("dem.run.threads"), std::string::npos);     // not an integer
+  EXPECT_NE(refusal("thermal.T_inn", "900").find("T_in"), std::string::npos);                  // did you mean
+  EXPECT_NE(refusal("sweep.speed_rpm", "50").find("no `sweep:` section"), std::string::npos);  // absent section
+  EXPECT_NE(refusal("thermal", "900").find("not a key path"), std::string::npos);
+  EXPECT_NE(refusal("thermal.T_in.x", "900").find("not a section"), std::string::npos);
 }
