@@ -130,6 +130,18 @@ MappedFilm map_dem_sections(const DemFilmAverages& a, const std::vector<std::siz
       while (k + 1 < nb && below + std::max(0.0, flow[k]) < target) below += std::max(0.0, flow[k++]);
       t = (static_cast<double>(k) + std::clamp((target - below) / std::max(flow[k], 1e-300), 0.0, 1.0)) * w;
       held_from = k + 1;
+      // The film is continuous from the wall: an empty bin below that top ends it at the
+      // bin's lower edge (the flow above the gap is left out; the flux closure counts it). A
+      // void inside the film would hold neither heat nor flow.
+      std::size_t gap = 0;
+      while (gap < nb && phi[gap] > 0.0) ++gap;
+      if (gap == 0)
+        throw std::invalid_argument("film mapping: no film at z = " + std::to_string(a.ring_z[i]) +
+                                    " m (the first bin is empty)");
+      if (gap <= k) {
+        t = static_cast<double>(gap) * w;
+        held_from = gap;
+      }
     } else {
       // The film: bins from the wall up with phi >= phi_cut, without a gap.
       std::size_t top = 0;

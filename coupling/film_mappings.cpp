@@ -21,14 +21,14 @@ const std::vector<double>& FilmMappingReport::profile(const std::string& name) c
 
 const std::vector<FilmMappingEntry>& film_mappings() {
   static const std::vector<FilmMappingEntry> table = {
-      {"as_measured",
-       "the film as the DEM measured it: full-circumference profiles of the developed sections, cut where the solid "
-       "fraction falls below 0.1 (docs/coupling.md \"Film as measured\")",
-       map_film_as_measured},
       {"as_measured_carried_flow",
        "as as_measured, the film reaching up to where it carries 99.5 % of the DEM's flow (the loose top inside it; "
        "docs/coupling.md \"Film as measured\")",
        map_film_as_measured_carried_flow},
+      {"as_measured",
+       "the film as the DEM measured it: full-circumference profiles of the developed sections, cut where the solid "
+       "fraction falls below 0.1 (docs/coupling.md \"Film as measured\")",
+       map_film_as_measured},
       {"along_drum",
        "a fed drum's film section by section along z from the feeder's end to the outlet, each section's own "
        "profiles, cut where the solid fraction crosses 0.1 (docs/coupling.md \"Film along the drum\")",

@@ -32,10 +32,17 @@ struct SurfaceConditions {
   // Multiplies the extinction depth, given or from phi (the error budget's perturbation;
   // 1 changes no arithmetic).
   double extinction_scale = 1.0;
-  // With the depth from phi (extinction_depth_d < 0): each cell's own phi instead of the
-  // column mean (thermal/solar_extinction.hpp).
-  bool extinction_local = false;
+  // With the depth from phi (extinction_depth_d < 0): each cell's own phi (thermal/
+  // solar_extinction.hpp), or the column mean (false; it lays sunlight into a loose top by
+  // depth alone, docs/slice_vs_drum_thermal.md).
+  bool extinction_local = true;
 };
+
+// Sunlight absorbed by each cell's own solid fraction (Beer-Lambert from the local phi): the
+// one rule the two-flux film top agrees with (its cells absorb and emit by their own phi).
+inline bool solar_by_local_phi(const SurfaceConditions& s) {
+  return s.absorb_depth_layers == 0.0 && s.extinction_depth_d < 0.0 && s.extinction_local;
+}
 
 // The drum interior as a diffuse grey enclosure (thermal/cavity_view_factors.hpp,
 // cavity_radiation.hpp): film rings, back plate, front annulus, aperture at z = L.

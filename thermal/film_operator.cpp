@@ -81,6 +81,14 @@ void FilmOperator::setup_film_top() {
     throw std::invalid_argument("film_top two_flux: the open surface's loss factor must be 1 (the film's own "
                                 "emissivity follows from the two-flux column)");
   if (!(ft.depth_d > 0.0)) throw std::invalid_argument("film_top two_flux: depth_d must be > 0");
+  // The zone's cells absorb and emit by their own solid fraction; sunlight laid by any other
+  // rule (the column's mean phi, a fixed depth, the top cell) lands in near-empty top cells
+  // that can neither hold nor re-emit it (a fed drum's loose top reached 2487 K,
+  // docs/slice_vs_drum_thermal.md).
+  if (!solar_by_local_phi(model_.surface))
+    throw std::invalid_argument(
+        "film_top two_flux takes the sunlight by each cell's own solid fraction: give thermal.flux.absorption "
+        "extinction with extinction_phi local (no extinction_depth_d)");
   const Material& m = model_.material;
   const double b = diffuse_sphere_backscatter_fraction();
   const int nxi = grid_.nxi;

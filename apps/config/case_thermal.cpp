@@ -179,9 +179,9 @@ void read_flux(MapReader r, const std::string& case_dir, th::FilmModel& m) {
     r.fail("extinction_depth_d", "must be > 0 (or omitted for the value from the solid fraction)");
   if (absorption == "extinction" && m.surface.extinction_depth_d < 0.0)
     m.surface.extinction_local =
-        r.choice("extinction_phi", "column_mean", {"column_mean", "local"},
-                 "solid fraction of the Beer-Lambert depth from phi: the column's mean, or each cell's own (the "
-                 "optical depth through a loose top)") == "local";
+        r.choice("extinction_phi", "local", {"local", "column_mean"},
+                 "solid fraction of the Beer-Lambert depth from phi: each cell's own (the optical depth through a "
+                 "loose top; docs/thermal_model.md), or the column's mean") == "local";
   m.flux_time = read_time_factor(r.child("time", "a time history multiplying the flux (needs thermal.transient)"));
   r.finish();
 }
@@ -274,6 +274,7 @@ void read_thermal_sections(MapReader& root, const std::string& case_dir, Thermal
                              m.material);
   if (film_from_dem && !root.has("film")) {
     c.film_source.kind = FilmSource::Kind::dem;
+    c.film_source.mapping = coupling::film_mappings().front().name;
   } else {
     MapReader f = root.child("film",
                              "the film the thermal model heats: analytic or from a file (coupled cases: the DEM's, "

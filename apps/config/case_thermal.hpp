@@ -20,7 +20,7 @@ struct FilmSource {
   enum class Kind { analytic, file, dem };
   Kind kind = Kind::analytic;
   std::string file;  // file: the film field read; dem: the dem.h5 mapped ("" until the coupled run sets it)
-  std::string mapping = "as_measured";  // dem: the film mapping's name
+  std::string mapping;  // dem: the film mapping's name (default: the registry's first, coupling/film_mappings.hpp)
 
   bool from_dem() const { return kind == Kind::dem; }
   // As the outputs record it: "analytic", the file, "dem" or "dem: <dem.h5>".

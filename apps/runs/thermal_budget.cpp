@@ -83,8 +83,10 @@ std::vector<BudgetInput> budget_inputs(const config::ThermalCase& c) {
   // The film top's thermal band (docs/thermal_model.md, "The film top as a participating
   // medium"): the two models are the ends, the case's own choice the nominal; a hypercube
   // sample takes two_flux from 0.5 up. Only where two-flux can run: a 2D film, and in the
-  // open-surface model a loss factor of 1 (the film's emission then follows from the column).
-  if (!c.grid.lumped && (c.model.cavity.enabled || c.model.surface.loss_factor == 1.0))
+  // open-surface model a loss factor of 1 (the film's emission then follows from the column),
+  // with the sunlight absorbed by each cell's own phi (thermal::solar_by_local_phi).
+  if (!c.grid.lumped && (c.model.cavity.enabled || c.model.surface.loss_factor == 1.0) &&
+      thermal::solar_by_local_phi(c.model.surface))
     in.push_back({"film top", "(0 surface, 1 two_flux)", c.model.film_top.two_flux ? 1.0 : 0.0, 0.0, 1.0,
                   "model choice",
                   "thermal.radiation.film_top: the top cell as a grey surface with ZBS radiation below, or the top "

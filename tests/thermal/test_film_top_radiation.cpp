@@ -374,3 +374,43 @@ TEST(FilmTopRadiation, OperatorClosesTheCavityBalance) {
     EXPECT_LT(std::abs(b.residual / b.aperture_power), 1e-10);
   }
 }
+
+// The two-flux top absorbs and emits in each cell by that cell's own phi, so the sunlight
+// must enter by the same rule: laid by the column's mean phi (or a fixed depth, or into the
+// top cell), it lands in near-empty top cells that can neither hold nor re-emit it (a fed
+// drum's loose top reached 2487 K that way, docs/slice_vs_drum_thermal.md). The operator
+// refuses every other rule with the keys that fix it; the local rule runs.
+TEST(FilmTopRadiation, TwoFluxTopTakesTheSunlightByEachCellsOwnPhi) {
+  namespace tc = centrec::thermal::testcases;
+  FilmModel m = tc::cavity_model_q300k();
+  m.film_top.two_flux = true;
+  FilmGridSpec g;
+  g.nz = 10;
+  g.nxi = 24;
+  const FilmField loose = tc::loose_top_film();
+  struct Rule {
+    const char* name;
+    void (*set)(SurfaceConditions&);
+  };
+  const Rule refused[] = {
+      {"column mean", [](SurfaceConditions& s) { s.extinction_depth_d = -1.0, s.extinction_local = false; }},
+      {"given depth", [](SurfaceConditions& s) { s.extinction_depth_d = 0.55; }},
+      {"at the surface", [](SurfaceConditions& s) { s.extinction_depth_d = 0.0; }},
+      {"layers", [](SurfaceConditions& s) { s.extinction_depth_d = 0.0, s.absorb_depth_layers = 2.0; }},
+  };
+  for (const Rule& r : refused) {
+    FilmModel x = m;
+    r.set(x.surface);
+    try {
+      FilmOperator op(loose, x, g);
+      ADD_FAILURE() << r.name << ": accepted";
+    } catch (const std::invalid_argument& e) {
+      std::printf("%s: %s\n", r.name, e.what());
+      EXPECT_NE(std::string(e.what()).find("extinction_phi local"), std::string::npos) << e.what();
+    }
+  }
+  FilmModel local = m;
+  local.surface.extinction_depth_d = -1.0;
+  local.surface.extinction_local = true;
+  EXPECT_NO_THROW(FilmOperator(loose, local, g));
+}

@@ -46,3 +46,17 @@ TEST(ThermalGoldenCases, OutletTemperaturesWithin0p1K) {
     }
   }
 }
+
+// The coupled case's defaults follow the evidence of docs/slice_vs_drum_thermal.md and
+// docs/coupling.md: the sunlight by each cell's own phi (the form the ray-trace test supports,
+// and the one the two-flux top accepts), the DEM's film up to where it carries 99.5 % of its
+// flow (the edge that closes the flux for every seed and time step measured).
+#include "config/case_file.hpp"
+TEST(ThermalCases, CoupledDefaultsAreLocalExtinctionAndTheCarriedFlowEdge) {
+  const centrec::config::CaseFile cf = centrec::config::read_case_file(CENTREC_SOURCE_DIR "/cases/quickstart.yaml");
+  ASSERT_TRUE(cf.thermal);
+  EXPECT_TRUE(cf.thermal->model.surface.extinction_local);
+  EXPECT_LT(cf.thermal->model.surface.extinction_depth_d, 0.0);
+  EXPECT_TRUE(centrec::thermal::solar_by_local_phi(cf.thermal->model.surface));
+  EXPECT_EQ(cf.thermal->film_source.mapping, "as_measured_carried_flow");
+}
