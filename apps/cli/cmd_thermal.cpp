@@ -64,13 +64,13 @@ int cmd_thermal(const Args& args) {
       b.absorbed >= thermal::film_balance_scale(b) ? "absorbed" : "the film's largest power");
   runs::print_receiver_report(c, r);
   std::printf("  k_eff film mean %.4g W/(m K); steady solve %.3f s (%d Newton, %ld BDF steps)%s; total %.3f s\n",
-              summary["k_eff"]["film_mean"]["k_eff"].get<double>(), r.steady_seconds, r.steady.newton_iterations,
+              runs::section_mean(r.keff, &thermal::KeffSection::k_eff), r.steady_seconds, r.steady.newton_iterations,
               r.steady.stats.steps, r.has_transient ? ", transient run" : "", seconds);
-  if (r.has_transient)
-    std::printf("  transient to %.4g s: T_out %.2f -> %.2f K (min %.2f, max %.2f), %ld steps, %.3f s\n",
-                summary["transient"]["t_end_s"].get<double>(), summary["transient"]["T_out_start_K"].get<double>(),
-                summary["transient"]["T_out_end_K"].get<double>(), summary["transient"]["T_out_min_K"].get<double>(),
-                summary["transient"]["T_out_max_K"].get<double>(), r.transient.stats.steps, r.transient_seconds);
+  if (r.has_transient) {
+    const runs::TransientOutlet o = runs::transient_outlet(r);
+    std::printf("  transient to %.4g s: T_out %.2f -> %.2f K (min %.2f, max %.2f), %ld steps, %.3f s\n", o.t_end,
+                o.T_start, o.T_end, o.T_min, o.T_max, r.transient.stats.steps, r.transient_seconds);
+  }
   std::printf("  wrote %s/{thermal.h5,thermal.xmf,summary.json,along_z.csv}\n", out_dir.c_str());
   return 0;
 }

@@ -339,21 +339,27 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
   j["solver"]["steady"]["residual_floor"] = r.steady.residual_floor;
   j["solver"]["steady"]["wall_time_s"] = r.steady_seconds;
   if (r.has_transient) {
-    const auto& s = r.transient.samples;
-    double lo = s.front().balance.T_out, hi = lo;
-    for (const auto& x : s) {
-      lo = std::min(lo, x.balance.T_out);
-      hi = std::max(hi, x.balance.T_out);
-    }
-    j["transient"] = {{"t_end_s", s.back().t},
-                      {"T_out_start_K", s.front().balance.T_out},
-                      {"T_out_end_K", s.back().balance.T_out},
-                      {"T_out_min_K", lo},
-                      {"T_out_max_K", hi}};
+    const TransientOutlet o = transient_outlet(r);
+    j["transient"] = {{"t_end_s", o.t_end},
+                      {"T_out_start_K", o.T_start},
+                      {"T_out_end_K", o.T_end},
+                      {"T_out_min_K", o.T_min},
+                      {"T_out_max_K", o.T_max}};
     j["solver"]["transient"] = stats_json(r.transient.stats);
     j["solver"]["transient"]["wall_time_s"] = r.transient_seconds;
   }
   return j;
+}
+
+TransientOutlet transient_outlet(const ThermalRun& r) {
+  const auto& s = r.transient.samples;
+  TransientOutlet o{s.back().t, s.front().balance.T_out, s.back().balance.T_out, s.front().balance.T_out,
+                    s.front().balance.T_out};
+  for (const auto& x : s) {
+    o.T_min = std::min(o.T_min, x.balance.T_out);
+    o.T_max = std::max(o.T_max, x.balance.T_out);
+  }
+  return o;
 }
 
 std::string efficiency_text(double efficiency) {

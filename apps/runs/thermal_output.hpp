@@ -26,6 +26,13 @@ std::string thermal_xdmf(const std::string& h5_name, const ThermalRun& r);
 // Film-average of a per-section k_eff quantity over the irradiated length (equal sections):
 // the `k_eff.film_mean` figures of summary.json.
 double section_mean(const std::vector<thermal::KeffSection>& k, double thermal::KeffSection::*m);
+
+// The outlet temperature over a run's transient (has_transient): its end time, s, and T_out at
+// the start, the end, its lowest and highest, K.
+struct TransientOutlet {
+  double t_end, T_start, T_end, T_min, T_max;
+};
+TransientOutlet transient_outlet(const ThermalRun& r);
 nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r);
 // Three printed lines: the mean solar flux on the film and through the aperture; the
 // receiver's power flow (aperture power, carried, losses through the aperture, convective
