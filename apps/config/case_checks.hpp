@@ -36,7 +36,8 @@ struct Overrides {
 ReceiverCase effective_receiver(const ReceiverCase& r, const Overrides& o);
 
 // The DEM a run simulates: `dem` as given (case keys overridden already, with_overrides), the
-// drum and feed the receiver derives (eqs 1-3; see apply_receiver), then the operating point. Throws std::invalid_argument when the receiver
+// drum and feed the receiver derives (eqs 1-3; see apply_receiver), then the operating
+// point. Throws std::invalid_argument when the receiver
 // and the DEM disagree (tilt, particle diameter).
 DemCase effective_dem(const DemCase& dem, const ReceiverCase* receiver, const Overrides& o);
 

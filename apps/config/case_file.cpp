@@ -11,6 +11,14 @@ namespace centrec::config {
 
 namespace {
 
+// "dem.run.threads" -> {"dem", "run", "threads"}.
+std::vector<std::string> key_path_parts(const std::string& dotted) {
+  std::vector<std::string> parts;
+  std::stringstream path(dotted);
+  for (std::string part; std::getline(path, part, '.');) parts.push_back(part);
+  return parts;
+}
+
 CaseFile read_case(MapReader root, const std::string& path) {
   CaseFile c;
   c.path = path;
@@ -91,9 +99,7 @@ CaseFile with_overrides(const CaseFile& cf, const Overrides& o) {
   if (o.keys.empty()) return cf;
   YAML::Node root = YAML::Load(cf.resolved_yaml);
   for (const auto& [key, value] : o.keys) {
-    std::vector<std::string> parts;
-    std::stringstream path(key);
-    for (std::string part; std::getline(path, part, '.');) parts.push_back(part);
+    const std::vector<std::string> parts = key_path_parts(key);
     if (parts.size() < 2 || std::find(parts.begin(), parts.end(), "") != parts.end())
       throw ConfigError(key + ": not a key path of a case (section.key, e.g. dem.run.threads)");
     if (!root[parts[0]].IsDefined())
@@ -113,8 +119,7 @@ CaseFile with_overrides(const CaseFile& cf, const Overrides& o) {
 
 std::string resolved_value(const CaseFile& cf, const std::string& dotted) {
   YAML::Node node = YAML::Load(cf.resolved_yaml);
-  std::stringstream path(dotted);
-  for (std::string part; std::getline(path, part, '.');) {
+  for (const std::string& part : key_path_parts(dotted)) {
     if (!node.IsMap() || !node[part].IsDefined()) return "";
     node.reset(node[part]);
   }
