@@ -5,6 +5,7 @@
 #include "cli/case_overrides.hpp"
 #include "cli/command_line.hpp"
 #include "cli/commands.hpp"
+#include "config/case_checks.hpp"
 #include "config/case_file.hpp"
 #include "liggghts/liggghts_export.hpp"
 
@@ -31,13 +32,16 @@ int cmd_export_liggghts(const Args& args) {
   app.read(args);
   const config::CaseFile cf = checked_overrides(config::read_case_file(case_path), overrides);
   if (!cf.dem) throw std::invalid_argument(case_path + " has no `dem:` section");
-  // The `dem:` section as given (the deck derives nothing from `receiver:`), with the override.
-  const config::DemCase dc = config::effective_dem(*cf.dem, nullptr, overrides);
+  // The drum `centrec dem` and `centrec run` simulate: the one the receiver derives
+  // (receiver.dem_diameter_d, eqs 1-3) when it does, with the same checks.
+  const config::DemCase dc = checked_dem(cf, overrides);
   const liggghts::LiggghtsDeckPlan plan = liggghts::export_liggghts(cf, dc, out_dir);
   std::printf("wrote %s/%s: dt %.3g s, %lld glued + %lld free particles, %lld + %lld steps, dumps every %lld steps\n",
               out_dir.c_str(), plan.deck.c_str(), plan.dt, static_cast<long long>(plan.glued),
               static_cast<long long>(plan.initial_free), static_cast<long long>(plan.spinup_steps),
               static_cast<long long>(plan.sampling_steps), static_cast<long long>(plan.dump_every));
+  std::printf("  %s\n", config::dem_drum_line(dc, cf.receiver && cf.receiver->dem_diameter_d > 0.0).c_str());
+  for (const std::string& d : plan.differences) std::printf("  differs from the native engine: %s\n", d.c_str());
   return 0;
 }
 

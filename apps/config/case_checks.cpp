@@ -46,6 +46,17 @@ DemCase effective_dem(const DemCase& dem, const ReceiverCase* receiver, const Ov
   return d;
 }
 
+std::string dem_drum_line(const DemCase& dc, bool derived) {
+  const auto& s = dc.scene;
+  char line[320];
+  std::snprintf(line, sizeof line, "DEM drum%s: D = %.4g m (D/d %.4g), %s = %.4g m, %.6g rpm, %s %.4g g/s, dt %.3g s",
+                derived ? " (derived from the receiver, receiver.dem_diameter_d)" : "", s.drum.diameter,
+                s.drum.diameter / s.particle.diameter, s.slice.enabled ? "periodic slice L" : "L",
+                s.slice.enabled ? s.slice.length : s.drum.length, coupling::rad_per_s_to_rpm(s.drum.omega),
+                s.slice.enabled ? "slice target" : "feed", 1e3 * dem::scene::target_mass_flow(s), dem_time_step(dc));
+  return line;
+}
+
 dem::TimeStepAdvice dem_time_step_advice(const DemCase& dc) {
   // As dem::Simulation::time_step_advice, over every particle the run can hold.
   const auto& s = dc.scene;

@@ -41,6 +41,11 @@ ReceiverCase effective_receiver(const ReceiverCase& r, const Overrides& o);
 // and the DEM disagree (tilt, particle diameter).
 DemCase effective_dem(const DemCase& dem, const ReceiverCase* receiver, const Overrides& o);
 
+// One line naming the drum a DEM run simulates: diameter, drum or slice length, speed, the
+// flow it runs at (feed or slice target) and the time step; `derived` says it came from
+// receiver.dem_diameter_d. What `validate` and `export-liggghts` print.
+std::string dem_drum_line(const DemCase& dc, bool derived);
+
 // A refused setting: the key path in the case file it concerns and why.
 struct CaseProblem {
   std::string key;

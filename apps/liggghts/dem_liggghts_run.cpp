@@ -76,6 +76,8 @@ io::DemRunResult run_dem_on_liggghts(const config::CaseFile& cf, const config::D
   std::fprintf(stderr, "centrec dem (LIGGGHTS, %d rank(s)): %s\n  dt = %.3g s, %lld glued + %lld free particles\n",
                launch.ranks, cf.path.c_str(), plan.dt, static_cast<long long>(plan.glued),
                static_cast<long long>(plan.initial_free));
+  for (const std::string& d : plan.differences)
+    std::fprintf(stderr, "centrec dem: warning: the LIGGGHTS run differs from the native engine: %s\n", d.c_str());
 
   dem::scene::SceneSampler sampler(dc.scene, dc.sampling.sampler);
   io::DemRunResult r;

@@ -240,7 +240,9 @@ std::string deck(const config::CaseFile& cf, const config::DemCase& dc, const Li
     << "# (z = L); gravity g (0, -cos tilt, sin tilt); the drum spins at omega about +z.\n"
     << fmt("# D = %.9g m, L = %.9g m, omega = %.9g rad/s, d = %.9g m, dt = %.9g s, %s mode.\n", c.drum.diameter,
            slice ? c.slice.length : c.drum.length, W, d, plan.dt, slice ? "periodic-slice" : "drum")
-    << "# Run: mpirun -np N liggghts -in " << plan.deck << "  (from this directory)\n\n";
+    << "# Run: mpirun -np N liggghts -in " << plan.deck << "  (from this directory)\n";
+  for (const std::string& diff : plan.differences) s << "# Differs from the native engine: " << diff << ".\n";
+  s << "\n";
   s << "atom_style granular\n"
        "atom_modify map array            # fix massflow/mesh deletes atoms by tag\n"
     << (slice ? "boundary f f p                   # periodic along the slice's axis\n"
@@ -360,6 +362,17 @@ std::vector<std::string> liggghts_inexpressible(const config::DemCase& dc) {
   return why;
 }
 
+std::vector<std::string> liggghts_differences(const config::DemCase& dc) {
+  std::vector<std::string> d;
+  const SceneConfig& c = dc.scene;
+  if (c.slice.enabled && c.slice.target_mass_flow > 0.0)
+    d.push_back(fmt("the slice's holdup controller (target %.4g g/s, dem.slice.controller_window_turns) is not in "
+                    "the deck: LIGGGHTS runs the starting holdup unchanged, where the native run adds or removes "
+                    "particles until the slice carries the target",
+                    1e3 * c.slice.target_mass_flow));
+  return d;
+}
+
 LiggghtsDeckPlan export_liggghts(const config::CaseFile& cf, const config::DemCase& dc, const std::string& dir,
                                  const dem::scene::SceneState* start) {
   const auto why = liggghts_inexpressible(dc);
@@ -373,6 +386,7 @@ LiggghtsDeckPlan export_liggghts(const config::CaseFile& cf, const config::DemCa
   c.threads = 1;  // the set-up only: its starting particles and resolved dt
   const dem::scene::CentrecScene scene = start ? dem::scene::CentrecScene(c, *start) : dem::scene::CentrecScene(c);
   LiggghtsDeckPlan plan;
+  plan.differences = liggghts_differences(dc);
   plan.dt = scene.simulation().dt();
   const double period = dem::scene::turn_period(c);
   plan.snapshots_per_turn = dc.sampling.sampler.snapshots_per_turn;

@@ -33,7 +33,13 @@ struct LiggghtsDeckPlan {
   bool has_ends = false;            // back plate and/or outlet lip present (drum_ends.stl)
   std::string dump_dir = "dumps", dump_pattern = "dumps/film_*.dump", flow_file = "mass_flow.txt";
   std::string log = "log.liggghts", screen = "screen.liggghts";
+  // What the deck runs differently from the native scene, one sentence each (written into
+  // the deck and printed by the commands that write it).
+  std::vector<std::string> differences;
 };
+
+// What a deck of this case runs differently from the native engine, without refusing it.
+std::vector<std::string> liggghts_differences(const config::DemCase& dc);
 
 // Every setting of the case LIGGGHTS 3.8 cannot express, one message each (empty: fine).
 std::vector<std::string> liggghts_inexpressible(const config::DemCase& dc);
