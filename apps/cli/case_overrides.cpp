@@ -11,10 +11,9 @@
 
 namespace centrec::cli {
 
-namespace {
 // A value as flags_text and override_args write it: the shortest text (at least 6
 // significant digits) that reads back as v, so a child process gets the value itself.
-std::string text(double v) {
+std::string shortest_text(double v) {
   char b[40];
   for (int digits = 6; digits <= 17; ++digits) {
     std::snprintf(b, sizeof b, "%.*g", digits, v);
@@ -22,6 +21,8 @@ std::string text(double v) {
   }
   return b;
 }
+
+namespace {
 
 // One override flag. It sets a case key (`key`), or the operating point (`point`: the
 // receiver's, or the DEM drum's without one, config::effective_dem), or, with neither, any
@@ -107,7 +108,7 @@ void add_override_flags(CommandLine& app, config::Overrides& o, const std::strin
 Args override_args(const config::Overrides& o) {
   Args a;
   for (const Flag& f : kFlags) {
-    if (f.point && o.*f.point) a.insert(a.end(), {f.name, text(*(o.*f.point))});
+    if (f.point && o.*f.point) a.insert(a.end(), {f.name, shortest_text(*(o.*f.point))});
     if (f.key && o.sets(f.key)) a.insert(a.end(), {f.name, o.keys.at(f.key)});
   }
   for (const auto& [key, value] : o.keys)

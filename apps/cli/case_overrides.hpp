@@ -27,6 +27,9 @@ std::vector<std::string> override_flag_names();
 // The case keys that `command`'s own flags set ("dem.run.threads", ...; --set's aside).
 std::vector<std::string> override_keys(const std::string& command);
 
+// The shortest text (at least 6 significant digits) that reads back as v.
+std::string shortest_text(double v);
+
 // "--threads 2 --duration 0.1": the overrides as they were given.
 std::string flags_text(const config::Overrides& o);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "config/case_checks.hpp"
 #include "io/atomic_write.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/h5_file.hpp"
@@ -88,6 +89,9 @@ nlohmann::json coupled_summary(const CoupledRun& r) {
   const auto& c = r.closure;
   const auto& m = r.imposed;
   const auto& sd = r.dem.scene;
+  j["point"]["speed_rpm"] = coupling::rad_per_s_to_rpm(r.has_receiver ? r.receiver.op.omega : sd.drum.omega);
+  j["point"]["seed"] = sd.seed;
+  j["point"]["dt_s"] = config::dem_time_step(r.dem);
   j["dem"] = {{"cached", r.dem_cached},
               {"given", r.dem_given},
               {"resumed_from", r.dem_resumed_from},

@@ -19,6 +19,18 @@ const std::vector<HeadlineFigure>& headline_figures() {
   return f;
 }
 
+const std::vector<HeadlineFigure>& point_inputs() {
+  static const std::vector<HeadlineFigure> f = {
+      {"/point/speed_rpm", "speed_rpm", "rpm"},
+      {"/point/mass_flow_kg_s", "mass_flow_kg_s", "kg/s"},
+      {"/point/T_in_K", "T_in_K", "K"},
+      {"/point/flux_film_mean_W_m2", "flux_film_mean_W_m2", "W/m2"},
+      {"/point/seed", "seed", "-"},
+      {"/point/dt_s", "dt_s", "s"},
+  };
+  return f;
+}
+
 bool headline_value(const nlohmann::json& summary, const HeadlineFigure& f, double& out) {
   const nlohmann::json::json_pointer ptr(f.pointer);
   if (!summary.contains(ptr) || !summary.at(ptr).is_number()) return false;

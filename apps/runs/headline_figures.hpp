@@ -16,6 +16,11 @@ struct HeadlineFigure {
 
 const std::vector<HeadlineFigure>& headline_figures();
 
+// The inputs that define a run's point (summary.json "point": speed, mass flow, inlet
+// temperature, mean flux on the film, DEM seed and step; null where the run has none, e.g.
+// the DEM's in a thermal-only run), under their sweep.csv columns.
+const std::vector<HeadlineFigure>& point_inputs();
+
 // The figure's number in a summary.json, or false where the summary has none there (a
 // thermal-only run has no DEM figures).
 bool headline_value(const nlohmann::json& summary, const HeadlineFigure& f, double& out);

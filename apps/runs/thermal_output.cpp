@@ -304,6 +304,13 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
   j["T_out_C"] = b.T_out - 273.15;
   j["T_surface_max_K"] = *std::max_element(r.fields.T_surface.begin(), r.fields.T_surface.end());
   j["mass_flow_kg_s"] = b.mass_flow;
+  // The inputs that define the point, as plain keys (a coupled run adds its DEM's).
+  j["point"] = {{"speed_rpm", nullptr},
+                {"mass_flow_kg_s", b.mass_flow},
+                {"T_in_K", c.model.T_in},
+                {"flux_film_mean_W_m2", mean_flux(b.incident, r.op->film_area())},
+                {"seed", nullptr},
+                {"dt_s", nullptr}};
   j["efficiency"] = b.efficiency;
   j["powers_W"] = balance_json(b);
   j["receiver"] = receiver_json(c, b, *r.op);

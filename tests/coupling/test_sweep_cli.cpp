@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -83,6 +84,80 @@ TEST(SweepCli, TwoPointsInParallelGiveATable) {
     ASSERT_TRUE(centrec::runs::headline_value(point, f, v)) << f.pointer;
     EXPECT_NEAR(std::stod(cells[at - columns.begin()]), v, 1e-5 * std::abs(v)) << f.column;  // csv: 6 digits
     EXPECT_EQ(a[f.column].get<double>(), v) << f.column;
+  }
+  fs::remove_all(dir);
+}
+
+// A study over any case key: --grid twice gives the Cartesian product; the points that share
+// their DEM (a thermal-only change) run it once; sweep.csv has the swept keys and the inputs
+// that define each point as plain columns, each equal to what the point ran with.
+TEST(SweepCli, GridOverThermalKeysSharesOneDem) {
+  const std::string dir = centrec::testing::temp_dir("sweep_grid");
+  const std::string cmd = std::string(CENTREC_BINARY) + " sweep " + kCase + " --out " + dir +
+                          "/study --allow-small-drum --grid thermal.flux.q_film=1.5e5,2e5 --grid thermal.T_in=800,873.15"
+                          " > " + dir + "/log 2>&1";
+  const int rc = std::system(cmd.c_str());
+  std::ifstream log(dir + "/log");
+  const std::string out((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  std::printf("%s\n", out.c_str());
+  ASSERT_EQ(rc, 0);
+  const auto j = nlohmann::json::parse(std::ifstream(dir + "/study/sweep.json"));
+  ASSERT_EQ(j["axes"].size(), 2u);
+  EXPECT_EQ(j["axes"][0]["key"], "thermal.flux.q_film");
+  ASSERT_EQ(j["points"].size(), 4u);
+  int dem_runs = 0;
+  std::map<std::pair<double, double>, double> t_out;
+  for (const auto& p : j["points"]) {
+    ASSERT_EQ(p["status"], 0);
+    const auto s = nlohmann::json::parse(std::ifstream(p["dir"].get<std::string>() + "/summary.json"));
+    dem_runs += s["dem"]["cached"].get<bool>() ? 0 : 1;
+    const double q = p["thermal.flux.q_film"], t_in = p["thermal.T_in"];
+    // The plain inputs are what the point ran with: its T_in, its flux (uniform: the mean).
+    EXPECT_EQ(s["point"]["T_in_K"].get<double>(), t_in);
+    EXPECT_EQ(p["T_in_K"].get<double>(), t_in);
+    EXPECT_NEAR(p["flux_film_mean_W_m2"].get<double>(), q, 1e-9 * q);
+    EXPECT_EQ(p["seed"].get<double>(), 12345);
+    EXPECT_EQ(p["dt_s"].get<double>(), 2e-5);
+    EXPECT_EQ(p["speed_rpm"].get<double>(), 160.08);
+    t_out[{q, t_in}] = p["T_out_K"];
+  }
+  EXPECT_EQ(dem_runs, 1) << "four points of one DEM ran it " << dem_runs << " times";
+  // More flux, hotter outlet; a hotter inlet, a hotter outlet.
+  const double hot = t_out[{2e5, 800}], cool = t_out[{1.5e5, 800}], hot_in = t_out[{2e5, 873.15}];
+  EXPECT_GT(hot, cool);
+  EXPECT_GT(hot_in, hot);
+  std::ifstream csv(dir + "/study/sweep.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("thermal.flux.q_film,thermal.T_in,speed_rpm,mass_flow_kg_s,T_in_K,flux_film_mean_W_m2,seed,dt_s,", 0),
+            0u) << header;
+  fs::remove_all(dir);
+}
+
+// The points are checked before any starts: a value the key's reader refuses, a repeated
+// point (2e5 and 200000 are one value), a key swept and set, a CSV row of the wrong width.
+TEST(SweepCli, RefusesBadPointsBeforeAnyRuns) {
+  const std::string dir = centrec::testing::temp_dir("sweep_refusals");
+  std::ofstream(dir + "/bad.csv") << "thermal.T_in,thermal.flux.q_film\n800,2e5\n900\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--grid thermal.T_in=800,5000", "thermal.T_in"},
+      {"--grid thermal.flux.q_film=2e5,200000", "given twice"},
+      {"--grid thermal.T_in=800,900 --set thermal.T_in=850", "both swept and set"},
+      {"--grid thermal.nonsense=1,2", "nonsense"},
+      {"--grid speed_rpm=-3,160", "speed_rpm"},
+      {"--points " + dir + "/bad.csv", "bad.csv:3"},
+  };
+  for (const auto& [flags, expect] : cases) {
+    const std::string out = dir + "/out";
+    const std::string cmd = std::string(CENTREC_BINARY) + " sweep " + kCase + " --allow-small-drum --out " + out +
+                            " " + flags + " > " + dir + "/log 2>&1";
+    const int rc = std::system(cmd.c_str());
+    std::ifstream log(dir + "/log");
+    const std::string why((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    std::printf("%s -> %s", flags.c_str(), why.c_str());
+    EXPECT_NE(rc, 0) << flags;
+    EXPECT_NE(why.find(expect), std::string::npos) << flags << ": " << why;
+    EXPECT_FALSE(fs::exists(out)) << flags << ": a folder was made before the points were checked";
   }
   fs::remove_all(dir);
 }

@@ -2,6 +2,7 @@
 // errors naming the key path, the line, the value and the allowed range.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -115,14 +116,26 @@ TEST(StrictYaml, AliasesThatExpandBeyondAnyCaseAreRefusedAtOnce) {
 }
 
 TEST(StrictYaml, ReadingCostGrowsWithTheFileNotItsSquare) {
-  // 200,000 distinct keys: a check that compares every key with every other takes ~20 s.
-  std::string text;
-  for (int k = 0; k < 200000; ++k) text += "key_" + std::to_string(k) + ": 1\n";
-  const auto t0 = std::chrono::steady_clock::now();
-  auto r = MapReader::from_string(text, "c.yaml");
-  const std::string msg = error_of([&] { r.finish(); });
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("200000 keys read and refused in %.3f s: %.80s\n", s, msg.c_str());
+  // 200,000 distinct keys: a check that compares every key with every other takes ~20 s. The
+  // cost of 200,000 keys over that of 20,000 is ~10 when it grows with the file and ~100 when
+  // it grows with its square; a ratio, so a loaded machine (CI, a DEM run beside) slows both.
+  auto seconds_for = [](int keys, std::string& msg) {
+    std::string text;
+    for (int k = 0; k < keys; ++k) text += "key_" + std::to_string(k) + ": 1\n";
+    double best = 1e300;
+    for (int rep = 0; rep < 2; ++rep) {
+      const auto t0 = std::chrono::steady_clock::now();
+      auto r = MapReader::from_string(text, "c.yaml");
+      msg = error_of([&] { r.finish(); });
+      best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return best;
+  };
+  std::string small_msg, msg;
+  const double small = seconds_for(20000, small_msg), s = seconds_for(200000, msg);
+  std::printf("20000 keys in %.3f s, 200000 keys read and refused in %.3f s (x %.1f): %.80s\n", small, s, s / small,
+              msg.c_str());
   EXPECT_NE(msg.find("key_"), std::string::npos) << msg;
-  EXPECT_LT(s, 5.0);
+  EXPECT_LT(s / small, 40.0);
+  EXPECT_LT(s, 30.0);
 }
