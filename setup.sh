@@ -19,7 +19,7 @@ PACKAGES=(
   build-essential cmake pkg-config git
   libeigen3-dev libsundials-dev libhdf5-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libomp-dev
-  python3 python3-matplotlib python3-h5py python3-numpy python3-yaml python3-meshio
+  python3 python3-matplotlib python3-h5py python3-numpy python3-yaml python3-meshio python3-pandas python3-xarray python3-pip
   nlohmann-json3-dev libcli11-dev
 )
 if [ "$WITH_LIGGGHTS" = "1" ]; then PACKAGES+=(liggghts lammps openmpi-bin); fi
