@@ -70,10 +70,15 @@ def fig3_thickness(f, out, written):
     z = fl["section_z"][()]
     length = z[-1] + z[0]  # equal sections from 0 to L
     fig, ax = plt.subplots(figsize=(7, 4))
-    ax.errorbar(z / length, fl["thickness_mean"][()] / d, yerr=fl["thickness_std"][()] / d, marker="o", ms=4,
-                capsize=3, label="tangential average, +- std over snapshots")
+    t, s = fl["thickness_mean"][()] / d, fl["thickness_std"][()] / d
+    label = "tangential average, +- std over snapshots"
+    if len(z) == 1:  # a periodic slice: one section, no axial profile to show
+        ax.axhline(t[0], color="C0", label=label + "\n(periodic slice: one section, uniform along z)")
+        ax.axhspan(t[0] - s[0], t[0] + s[0], color="C0", alpha=0.2)
+    else:
+        ax.errorbar(z / length, t, yerr=s, marker="o", ms=4, capsize=3, label=label)
     ax.set_xlim(0, 1)
-    ax.set_ylim(bottom=0)
+    ax.set_ylim(0, 1.35 * float(max(t + s)))
     ax.set_title("Film thickness along the drum, %d sampled turns (paper Fig 3)" % round(float(fl.attrs["sampled_turns"])))
     pc.style(ax, "z / L   (0 = inlet / back plate, 1 = outlet)", "film thickness (particle diameters)")
     pc.save(fig, out, "fig3_film_thickness.png", written)
@@ -101,7 +106,9 @@ def fig6_profiles(f, out, written):
             ax.set_ylabel("axial velocity (m/s)")
     for k in range(n, rows * cols):
         axes[k // cols][k % cols].set_visible(False)
-    fig.suptitle("Axial velocity profiles, mean +- std over turns (paper Fig 6)")
+    one_section = len(set(np.round(zl, 6))) == 1 and n < 9
+    fig.suptitle("Axial velocity profiles, mean +- std over turns (paper Fig 6%s)"
+                 % (": a periodic slice has one axial section, so its three arcs" if one_section else ""))
     pc.save(fig, out, "fig6_velocity_profiles.png", written)
 
 

@@ -30,19 +30,32 @@ def film(f, out, written):
     fl = f["film"]
     d = fl.attrs["particle_diameter"]
     z, t, L = fl["z"][()], fl["t"][()], fl.attrs["length"]
-    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4))
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4.8))
+    mapping = pc.text(f["coupling"].attrs.get("film_mapping", "")) if "coupling" in f else ""
+    top = float(max(t)) / d
     if "coupling/dem_thickness" in f:
         c = f["coupling"]
         # DEM section centres sit symmetrically in the DEM drum (a slice's one at mid-length),
         # so first + last centre = the DEM drum's length: carried to the receiver's z by L.
         zs = c["dem_section_z"][()]
-        zd = zs * L / (zs[0] + zs[-1])
-        ax.errorbar(zd, c["dem_thickness"][()] / d, yerr=c["dem_thickness_std"][()] / d, fmt="o", ms=3,
-                    capsize=2, label="DEM, eqs 4-7 (the paper's thickness), +- std over turns")
-    ax.plot(z, t / d, "s-", ms=3, label="thermal film (to solid fraction 0.1)")
+        td, sd = c["dem_thickness"][()] / d, c["dem_thickness_std"][()] / d
+        top = max(top, float(max(td + sd)))
+        label = "DEM, eqs 4-7 (paper), +- std over turns"
+        if len(zs) == 1:  # a periodic slice: one section, the same film all along the receiver
+            ax.axhline(td[0], color="C0", label=label + "; a slice: uniform in z")
+            ax.axhspan(td[0] - sd[0], td[0] + sd[0], color="C0", alpha=0.2)
+        else:
+            ax.errorbar(zs * L / (zs[0] + zs[-1]), td, yerr=sd, fmt="o", ms=3, capsize=2, label=label)
+    label = "thermal film" + (" (mapping %s)" % mapping if mapping else "")
+    if len(z) == 1:
+        ax.axhline(t[0] / d, color="C1", label=label + "; uniform in z")
+    else:
+        ax.plot(z, t / d, "s-", ms=3, color="C1", label=label)
+    ax.set_xlim(0, L)
     ax.set_title("Film thickness on the receiver, L = %.3g m" % L)
-    ax.set_ylim(bottom=0)
-    style(ax, "axial position z (m)", "film thickness (d)")
+    ax.set_ylim(0, 1.15 * top)
+    style(ax, "axial position z (m)", "film thickness (d)", legend=False)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), fontsize=8)
     eta = fl["eta"][()] / d
     i = len(z) // 2
     ne = len(eta)
@@ -56,7 +69,7 @@ def film(f, out, written):
     ax3.set_ylabel("dispersion D (mm2/s)", color="C3")
     h2, l2 = ax2.get_legend_handles_labels()
     h3, l3 = ax3.get_legend_handles_labels()
-    ax2.legend(h2 + h3, l2 + l3, loc="center right")
+    ax2.legend(h2 + h3, l2 + l3, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=3, fontsize=8)
     save(fig, out, "run_film.png", written)
 
 

@@ -25,7 +25,8 @@ namespace {
 
 struct DemOptions {
   std::string case_path, out_dir = "out/dem", resume_dir;
-  bool no_plots = false, overwrite = false, out_given = false;
+  bool overwrite = false, out_given = false;
+  FigureOptions figures;
   config::Overrides overrides;  // --threads, --duration, --wall-rolling-model, --set
   DemEngineOptions engine;
 };
@@ -41,7 +42,8 @@ void print_dem_help(const CommandLine& app) {
       "units as attributes), DIR/dem.xmf and DIR/drum.xmf (open in ParaView), DIR/mass_flow.csv\n"
       "and the paper's figures (apps/plot_dem.py): fig2_mass_flow.png (outlet flow vs time),\n"
       "fig3_film_thickness.png (thickness along z), fig6_velocity_profiles.png (the nine\n"
-      "profiles) and solid_fraction.png (--no-plots: none).\n"
+      "profiles) and solid_fraction.png (--no-plots: none; --figures png,pdf,svg and --dpi N:\n"
+      "other formats and resolutions).\n"
       "--threads, --duration, --wall-rolling-model and --set enter the resolved configuration in the\n"
       "outputs and the checkpoint.\n"
       "--engine liggghts runs the same case on LIGGGHTS 3.8 (`mpirun -np N liggghts`, N = --ranks;\n"
@@ -63,7 +65,7 @@ void declare(CommandLine& app, DemOptions& o) {
   app.add_option("--resume", o.resume_dir, "continue the stopped or killed run in DIR from its checkpoint")
       ->option_text("DIR");
   add_override_flags(app, o.overrides, "dem");
-  app.add_flag("--no-plots", o.no_plots, "draw no figures");
+  add_figure_flags(app, o.figures);
   add_overwrite_flag(app, o.overwrite);
   add_engine_options(app, o.engine);
 }
@@ -146,7 +148,7 @@ int cmd_dem(const Args& args) {
     std::fprintf(stderr, "centrec dem: %s; no figures drawn\n", e.what());
     return 128 + e.signal();
   }
-  if (!opt.no_plots) run_plot_script("centrec dem", "plot_dem.py", {opt.out_dir});
+  run_plot_script("centrec dem", "plot_dem.py", {opt.out_dir}, opt.figures);
   return 0;
 }
 

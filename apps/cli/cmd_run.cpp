@@ -62,7 +62,8 @@ void print_run_help(const CommandLine& app) {
       "field; reusable as `film: {file: DIR/film.h5}`) and the figures of apps/plot_run.py:\n"
       "the paper's Figs 2, 3 and 6 from the DEM (fig2_mass_flow.png, fig3_film_thickness.png,\n"
       "fig6_velocity_profiles.png), the film temperature field (thermal_T_map.png), the power\n"
-      "balance (losses.png), k_eff, film and velocity (--no-plots: none).\n");
+      "balance (losses.png), k_eff, film and velocity (--no-plots: none; --figures png,pdf,svg and\n"
+      "--dpi N: other formats and resolutions).\n");
 }
 
 std::string parent_of(const std::string& dir) {
@@ -74,7 +75,7 @@ std::string parent_of(const std::string& dir) {
 // `--replicas N`: the same command N times as child processes, seed base + k into
 // DIR/replica_<k>/, then the spread of the headline figures (runs/replica_summary.hpp).
 int run_replicas(const CommandLine& app, const Args& args, const std::string& case_path, const std::string& out_dir,
-                 const config::CaseFile& cf, const runs::RunOptions& o, int replicas, bool no_plots, bool overwrite) {
+                 const config::CaseFile& cf, const runs::RunOptions& o, int replicas, const FigureOptions& figures, bool overwrite) {
   if (!(cf.dem && cf.thermal && cf.thermal->film_source.from_dem()))
     throw UsageError(case_path + ": --replicas repeats the DEM with other seeds, but this case has no DEM film");
   // `cf` holds the overrides' keys: its seed and threads are the command line's when given.
@@ -89,7 +90,7 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
   // given anew from the overrides; --overwrite is passed on: the replicas' folders are the
   // earlier run's too).
   std::vector<std::string> set_here = override_flag_names();
-  set_here.insert(set_here.end(), {"--out", "--replicas", "--cache", "--no-plots"});
+  set_here.insert(set_here.end(), {"--out", "--replicas", "--cache", "--no-plots", "--figures", "--dpi"});
   const Args common = without_options(app, args, set_here);
   const std::string exe = own_executable();
   std::vector<ChildJob> jobs;
@@ -106,7 +107,10 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
     replica.keys["dem.run.threads"] = std::to_string(per_child);
     const Args flags = override_args(replica);
     job.argv.insert(job.argv.end(), flags.begin(), flags.end());
-    if (no_plots || k > 0) job.argv.push_back("--no-plots");  // replica 0 draws the figures
+    FigureOptions replica_figures = figures;
+    replica_figures.none = figures.none || k > 0;  // replica 0 draws the figures
+    const Args figure_flags = figure_args(replica_figures);
+    job.argv.insert(job.argv.end(), figure_flags.begin(), figure_flags.end());
     jobs.push_back(job);
     seeds.push_back(static_cast<std::uint64_t>(base + k));
     dirs.push_back(dir);
@@ -145,7 +149,8 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
 int cmd_run(const Args& args) {
   std::string case_path, out_dir;
   runs::RunOptions o;
-  bool no_plots = false, overwrite = false;
+  bool overwrite = false;
+  FigureOptions figures;
   int replicas = 1;
   CommandLine app("run");
   app.add_option("CASE", case_path)->required();
@@ -154,7 +159,7 @@ int cmd_run(const Args& args) {
   app.add_option("--replicas", replicas, "run the chain with N DEM seeds (seed, seed + 1, ...) and their spread")
       ->check(integer_in(1, 64))
       ->option_text("N");
-  app.add_flag("--no-plots", no_plots, "draw no figures");
+  add_figure_flags(app, figures);
   add_overwrite_flag(app, overwrite);
   for (const runs::RunOptionFlag& f : runs::run_option_flags()) {
     if (f.on)
@@ -167,7 +172,6 @@ int cmd_run(const Args& args) {
     return 0;
   }
   app.read(args);
-  const bool plots = !no_plots;
   if (o.cache_dir.empty()) o.cache_dir = parent_of(out_dir) + "/dem-cache";
   const config::Overrides& overrides = o.overrides;
   const config::CaseFile given = config::read_case_file(case_path);
@@ -176,7 +180,7 @@ int cmd_run(const Args& args) {
   if (cf.dem && cf.thermal && cf.thermal->film_source.from_dem()) checked_dem(cf, overrides);
   if (replicas > 1 && !o.dem_from.empty())
     throw UsageError("--replicas runs the DEM with other seeds; --dem-from takes one earlier run: give one of them");
-  if (replicas > 1) return run_replicas(app, args, case_path, out_dir, cf, o, replicas, no_plots, overwrite);
+  if (replicas > 1) return run_replicas(app, args, case_path, out_dir, cf, o, replicas, figures, overwrite);
   const io::OutputFolder out(out_dir);
   const io::RunFolderClaim claim(out_dir, "centrec run " + case_path, folder_use(overwrite));
   runs::CoupledRun r;
@@ -234,11 +238,9 @@ int cmd_run(const Args& args) {
       "  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote "
       "%s/{summary.json,results.h5,results.xmf,film.h5,along_z.csv}\n",
       r.dem_seconds, r.mapping_seconds, r.thermal_seconds, out_dir.c_str());
-  if (plots) {
-    std::vector<std::string> plot_args = {out_dir};
-    if (r.film_from_dem()) plot_args.insert(plot_args.end(), {"--dem", r.dem_dir});
-    run_plot_script("centrec run", "plot_run.py", plot_args);
-  }
+  std::vector<std::string> plot_args = {out_dir};
+  if (r.film_from_dem()) plot_args.insert(plot_args.end(), {"--dem", r.dem_dir});
+  run_plot_script("centrec run", "plot_run.py", plot_args, figures);
   return 0;
 }
 

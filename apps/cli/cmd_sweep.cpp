@@ -117,6 +117,8 @@ int cmd_sweep(const Args& args) {
   app.add_flag("--allow-small-drum", allow_small_drum,
                "run a DEM drum below the scale-down validity threshold (the outputs carry a warning)");
   add_overwrite_flag(app, overwrite);
+  FigureOptions charts;  // the sweep's own charts (its points draw none)
+  add_figure_flags(app, charts);
   config::Overrides overrides;  // --set: the same at every point
   add_override_flags(app, overrides, "sweep");
   if (wants_help(args)) {
@@ -265,7 +267,7 @@ int cmd_sweep(const Args& args) {
   std::printf("centrec sweep %s: %zu points, %d failed; wrote %s/sweep.csv and sweep.json\n", case_path.c_str(), n,
               failed, out_dir.c_str());
   std::fputs(csv.str().c_str(), stdout);
-  run_plot_script("centrec sweep", "plot_sweep.py", {out_dir});
+  run_plot_script("centrec sweep", "plot_sweep.py", {out_dir}, charts);
   return failed ? 1 : 0;
 }
 

@@ -1,5 +1,7 @@
 // centrec: DEM of the CentRec particle film, coupling and thermal film model.
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <stdexcept>
@@ -21,8 +23,8 @@ const std::vector<Command>& commands() {
       {"thermal", "solve the film energy equation under solar flux: T_out, efficiency, k_eff", cmd_thermal},
       {"budget", "error budget: the inputs' stated uncertainties propagated to T_out, efficiency, k_eff", cmd_budget},
       {"paths", "a fed drum's residence times and its particles heated along their own paths", cmd_paths},
-      {"sweep", "operating map: coupled runs over speed x mass flow in parallel processes", cmd_sweep},
-      {"validate", "check a YAML case and print its fully resolved configuration", cmd_validate},
+      {"sweep", "a study: coupled runs over a grid of case keys (speed x mass flow by default) in parallel", cmd_sweep},
+      {"validate", "check a YAML case; print the DEM drum it runs and its fully resolved configuration", cmd_validate},
       {"keys", "print every case-file key with type, default, range, unit and meaning (Markdown)", cmd_keys},
   };
   return table;
@@ -33,7 +35,9 @@ const std::vector<Command>& commands() {
 namespace {
 void print_usage(std::FILE* to = stdout) {
   std::fprintf(to, "usage: centrec <command> [options]    (centrec --version: the code version)\n\ncommands:\n");
-  for (const auto& c : centrec::cli::commands()) std::fprintf(to, "  %-10s %s\n", c.name, c.summary);
+  int width = 0;
+  for (const auto& c : centrec::cli::commands()) width = std::max(width, static_cast<int>(std::strlen(c.name)));
+  for (const auto& c : centrec::cli::commands()) std::fprintf(to, "  %-*s  %s\n", width, c.name, c.summary);
   std::fprintf(to, "\n'centrec <command> --help' describes each command.\n");
 }
 }  // namespace

@@ -1,5 +1,7 @@
 #include "cli/plot_scripts.hpp"
 
+#include "cli/command_line.hpp"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -8,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 extern char** environ;
 
@@ -56,7 +59,36 @@ std::string plot_script_dir() {
   return CENTREC_PLOT_DIR;
 }
 
-bool run_plot_script(const std::string& who, const std::string& script, const std::vector<std::string>& args) {
+void add_figure_flags(CommandLine& app, FigureOptions& f) {
+  app.add_flag("--no-plots", f.none, "draw no figures");
+  app.add_option("--figures", f.formats, "the figures' formats, comma-separated: png, pdf, svg, eps (default png)")
+      ->option_text("LIST")
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            std::stringstream in(s);
+            std::string fmt;
+            bool any = false;
+            while (std::getline(in, fmt, ',')) {
+              if (fmt != "png" && fmt != "pdf" && fmt != "svg" && fmt != "eps")
+                return "'" + fmt + "' is not a figure format (png, pdf, svg, eps)";
+              any = true;
+            }
+            return any ? std::string() : std::string("no format given (e.g. png,pdf)");
+          },
+          "LIST"));
+  app.add_option("--dpi", f.dpi, "the figures' resolution in dots per inch (default 130)")
+      ->check(integer_in(50, 1200))
+      ->option_text("N");
+}
+
+std::vector<std::string> figure_args(const FigureOptions& f) {
+  if (f.none) return {"--no-plots"};
+  return {"--figures", f.formats, "--dpi", std::to_string(f.dpi)};
+}
+
+bool run_plot_script(const std::string& who, const std::string& script, const std::vector<std::string>& args,
+                     const FigureOptions& f) {
+  if (f.none) return false;
   const char* install = "Debian: apt-get install python3-matplotlib python3-h5py python3-numpy, or ./setup.sh";
   const std::string py = python();
   if (access(py.c_str(), X_OK) != 0) {
@@ -70,6 +102,7 @@ bool run_plot_script(const std::string& who, const std::string& script, const st
   }
   std::vector<std::string> argv = {py, plot_script_dir() + "/" + script};
   argv.insert(argv.end(), args.begin(), args.end());
+  argv.insert(argv.end(), {"--formats", f.formats, "--dpi", std::to_string(f.dpi)});
   const int rc = spawn_and_wait(argv);
   if (rc != 0) {
     std::string cmd;

@@ -9,9 +9,27 @@
 
 namespace centrec::cli {
 
-// Runs `python3 SCRIPT ARGS...` (no shell) and prints its "wrote ..." lines; who names the
-// command in messages ("centrec run"). Returns true when the script ran and succeeded.
-bool run_plot_script(const std::string& who, const std::string& script, const std::vector<std::string>& args);
+class CommandLine;
+
+// What figures a command draws: none (--no-plots), or each figure in these formats at this
+// resolution (--figures png,pdf,svg --dpi 300; PNG at 130 dpi by default).
+struct FigureOptions {
+  bool none = false;
+  std::string formats = "png";  // comma-separated: png, pdf, svg, eps
+  int dpi = 130;
+};
+
+// Declares --no-plots, --figures and --dpi on `app`.
+void add_figure_flags(CommandLine& app, FigureOptions& f);
+
+// The figure flags as given, for a child process's command line.
+std::vector<std::string> figure_args(const FigureOptions& f);
+
+// Runs `python3 SCRIPT ARGS... --formats F --dpi N` (no shell) and prints its "wrote ..."
+// lines; who names the command in messages ("centrec run"). Returns true when the script
+// ran and succeeded; draws nothing (and returns false) with f.none.
+bool run_plot_script(const std::string& who, const std::string& script, const std::vector<std::string>& args,
+                     const FigureOptions& f);
 
 // Where the scripts are: next to the installed binary (../share/centrec/scripts), else the
 // source tree's apps/ the binary was built from.

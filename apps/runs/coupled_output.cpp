@@ -22,6 +22,7 @@ void write_coupling_group(io::H5File& f, const CoupledRun& r) {
   f.set_attribute("/coupling", "dem_target_mdot_kg_s", r.averages.mdot_target);
   f.set_attribute("/coupling", "dem_steady", r.averages.steady ? 1.0 : 0.0);
   f.set_attribute("/coupling", "dem_steady_state", r.averages.steady_text);
+  f.set_attribute("/coupling", "film_mapping", r.mapping.mapping);
   for (const auto& fig : r.mapping.figures) f.set_attribute("/coupling", fig.name, fig.value);
   f.set_attribute("/coupling", "flow_closure_mean", c.mean_over_measured);
   f.set_attribute("/coupling", "flow_closure_worst_error", c.worst_error);

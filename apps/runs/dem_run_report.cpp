@@ -97,9 +97,10 @@ nlohmann::json summary(const config::CaseFile& cf, const config::DemCase& dc, co
   j["glued_particles"] = r.glued_particles;
   j["holdup_kg"] = r.holdup_kg;
   const bool fed = dc.scene.feeder.enabled && !dc.scene.slice.enabled;
-  j["target_mdot_kg_s"] = fed ? dc.scene.feeder.mass_flow : 0.0;
-  j["inlet_mdot_kg_s"] = fed_rate;
-  j["outlet_mdot_kg_s"] = out_rate;
+  // A slice has no feed and no outlet (its flow is slice_mdot_kg_s): null, not 0.
+  j["target_mdot_kg_s"] = fed ? nlohmann::json(dc.scene.feeder.mass_flow) : nlohmann::json(nullptr);
+  j["inlet_mdot_kg_s"] = dc.scene.slice.enabled ? nlohmann::json(nullptr) : nlohmann::json(fed_rate);
+  j["outlet_mdot_kg_s"] = dc.scene.slice.enabled ? nlohmann::json(nullptr) : nlohmann::json(out_rate);
   j["flow_window_s"] = window;
   // Steady over the last flow window (dem/scene/mass_flow_window.hpp): the film a coupled
   // run may use.

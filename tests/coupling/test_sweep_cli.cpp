@@ -95,7 +95,7 @@ TEST(SweepCli, GridOverThermalKeysSharesOneDem) {
   const std::string dir = centrec::testing::temp_dir("sweep_grid");
   const std::string cmd = std::string(CENTREC_BINARY) + " sweep " + kCase + " --out " + dir +
                           "/study --allow-small-drum --grid thermal.flux.q_film=1.5e5,2e5 --grid thermal.T_in=800,873.15"
-                          " > " + dir + "/log 2>&1";
+                          " --figures png,pdf --dpi 80 > " + dir + "/log 2>&1";
   const int rc = std::system(cmd.c_str());
   std::ifstream log(dir + "/log");
   const std::string out((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
@@ -131,6 +131,13 @@ TEST(SweepCli, GridOverThermalKeysSharesOneDem) {
   std::getline(csv, header);
   EXPECT_EQ(header.rfind("thermal.flux.q_film,thermal.T_in,speed_rpm,mass_flow_kg_s,T_in_K,flux_film_mean_W_m2,seed,dt_s,", 0),
             0u) << header;
+  // --figures png,pdf --dpi 80: each chart in both formats, the PNG 11 in x 80 dpi wide.
+  EXPECT_TRUE(fs::exists(dir + "/study/sweep_map.pdf"));
+  std::ifstream png(dir + "/study/sweep_map.png", std::ios::binary);
+  unsigned char head[24] = {};
+  png.read(reinterpret_cast<char*>(head), sizeof head);
+  const unsigned width = (head[16] << 24) | (head[17] << 16) | (head[18] << 8) | head[19];
+  EXPECT_EQ(width, 880u) << "sweep_map.png is not 11 in at 80 dpi";
   fs::remove_all(dir);
 }
 

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "tests/reliability/run_binary.hpp"
@@ -147,6 +148,29 @@ TEST(CliUsage, AFeedTheFeederCannotDeliverIsWarned) {
     EXPECT_NE(summary.find(w), std::string::npos) << w << " not in summary.json";
     EXPECT_NE(r.err.find(std::string("WARNING: ") + w), std::string::npos) << r.err;
   }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliUsage, ASliceHasNoFeedOrOutletFlow) {
+  // A periodic slice has no feeder and no outlet: its summary says null for those flows (a 0
+  // read as a drum that carries nothing), and gives its own axial flow and target.
+  const std::string dir = temp_dir("cli_slice");
+  std::ofstream(dir + "/case.yaml")
+      << "dem:\n  drum: {diameter: 0.03, length: 0.04275, speed_rpm: 320.16}\n"
+         "  slice: {enabled: true, length_d: 4, target_mass_flow: 0.002}\n  initial_film: {particles: 300}\n"
+         "  run: {duration: 0.02, max_extension: 0, dt: 2.0e-5, threads: 1, checkpoint_interval: 0}\n"
+         "  sampling: {turns: 1, snapshots_per_turn: 2}\n";
+  const BinaryRun r = run_binary({"dem", dir + "/case.yaml", "--out", dir + "/out", "--no-plots"}, 120.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto s = nlohmann::json::parse(std::ifstream(dir + "/out/summary.json"));
+  std::printf("slice: target %s, inlet %s, outlet %s, slice flow %s of %s kg/s\n", s["target_mdot_kg_s"].dump().c_str(),
+              s["inlet_mdot_kg_s"].dump().c_str(), s["outlet_mdot_kg_s"].dump().c_str(),
+              s["slice_mdot_kg_s"].dump().c_str(), s["slice_target_mdot_kg_s"].dump().c_str());
+  EXPECT_EQ(s["mode"], "slice");
+  for (const char* key : {"target_mdot_kg_s", "inlet_mdot_kg_s", "outlet_mdot_kg_s"})
+    EXPECT_TRUE(s[key].is_null()) << key << " = " << s[key];
+  EXPECT_TRUE(s["slice_mdot_kg_s"].is_number());
+  EXPECT_EQ(s["slice_target_mdot_kg_s"].get<double>(), 0.002);
   std::filesystem::remove_all(dir);
 }
 
