@@ -105,14 +105,16 @@ void add_override_flags(CommandLine& app, config::Overrides& o, const std::strin
   }
 }
 
-Args override_args(const config::Overrides& o) {
+Args override_args(const config::Overrides& o, const std::string& command) {
   Args a;
   for (const Flag& f : kFlags) {
     if (f.point && o.*f.point) a.insert(a.end(), {f.name, shortest_text(*(o.*f.point))});
-    if (f.key && o.sets(f.key)) a.insert(a.end(), {f.name, o.keys.at(f.key)});
+    if (f.key && o.sets(f.key) && takes(f, command)) a.insert(a.end(), {f.name, o.keys.at(f.key)});
   }
-  for (const auto& [key, value] : o.keys)
-    if (!flag_of_key(key)) a.insert(a.end(), {"--set", key + "=" + value});
+  for (const auto& [key, value] : o.keys) {
+    const Flag* own = flag_of_key(key);
+    if (!own || !takes(*own, command)) a.insert(a.end(), {"--set", key + "=" + value});
+  }
   return a;
 }
 
@@ -129,30 +131,30 @@ std::vector<std::string> override_keys(const std::string& command) {
   return keys;
 }
 
-std::string flags_text(const config::Overrides& o) {
+std::string flags_text(const config::Overrides& o, const std::string& command) {
   std::string s;
-  for (const std::string& a : override_args(o)) s += (s.empty() ? "" : " ") + a;
+  for (const std::string& a : override_args(o, command)) s += (s.empty() ? "" : " ") + a;
   return s;
 }
 
-config::CaseFile checked_overrides(const config::CaseFile& cf, const config::Overrides& o) {
+config::CaseFile checked_overrides(const config::CaseFile& cf, const config::Overrides& o, const std::string& command) {
   try {
     return config::with_overrides(cf, o);
   } catch (const config::ConfigError& e) {
-    throw UsageError("with " + flags_text(o) + ": " + e.what());
+    throw UsageError("with " + flags_text(o, command) + ": " + e.what());
   }
 }
 
-config::DemCase checked_dem(const config::CaseFile& cf, const config::Overrides& o) {
+config::DemCase checked_dem(const config::CaseFile& cf, const config::Overrides& o, const std::string& command) {
   const config::ReceiverCase* receiver = cf.receiver ? &*cf.receiver : nullptr;
   config::DemCase dc;
   try {
     dc = config::effective_dem(*cf.dem, receiver, o);
   } catch (const std::invalid_argument& e) {
-    throw UsageError("with " + flags_text(o) + ": " + e.what());
+    throw UsageError("with " + flags_text(o, command) + ": " + e.what());
   }
   if (const auto p = config::dem_run_problem(dc, receiver && receiver->dem_diameter_d > 0.0))
-    throw UsageError("with " + flags_text(o) + ": " + p->key + ": " + p->message);
+    throw UsageError("with " + flags_text(o, command) + ": " + p->key + ": " + p->message);
   return dc;
 }
 

@@ -17,10 +17,10 @@ namespace centrec::cli {
 // setting its part of `o` when given.
 void add_override_flags(CommandLine& app, config::Overrides& o, const std::string& command);
 
-// {"--threads", "2", "--set", "thermal.T_in=900"}: the given overrides as arguments (a key
-// with a flag of its own by that flag, any other by --set), each value written so that it
-// reads back as itself.
-Args override_args(const config::Overrides& o);
+// {"--threads", "2", "--set", "thermal.T_in=900"}: the given overrides as arguments to
+// `command` (a key with a flag of its own that `command` takes by that flag, any other by
+// --set), each value written so that it reads back as itself.
+Args override_args(const config::Overrides& o, const std::string& command);
 // Every override flag's name ("--threads", ..., "--set"): what a child's command line sets anew.
 std::vector<std::string> override_flag_names();
 
@@ -30,15 +30,15 @@ std::vector<std::string> override_keys(const std::string& command);
 // The shortest text (at least 6 significant digits) that reads back as v.
 std::string shortest_text(double v);
 
-// "--threads 2 --duration 0.1": the overrides as they were given.
-std::string flags_text(const config::Overrides& o);
+// "--threads 2 --set thermal.T_in=900": the overrides as `command` takes them (override_args).
+std::string flags_text(const config::Overrides& o, const std::string& command);
 
 // The case with the overrides' keys (config::with_overrides), its ConfigError turned into a
-// UsageError naming the flags.
-config::CaseFile checked_overrides(const config::CaseFile& cf, const config::Overrides& o);
+// UsageError naming the flags as `command` takes them.
+config::CaseFile checked_overrides(const config::CaseFile& cf, const config::Overrides& o, const std::string& command);
 
 // The DEM a run simulates with the overrides' operating point, checked
 // (config::dem_run_problem); `cf` has the overrides' keys already (checked_overrides).
-config::DemCase checked_dem(const config::CaseFile& cf, const config::Overrides& o);
+config::DemCase checked_dem(const config::CaseFile& cf, const config::Overrides& o, const std::string& command);
 
 }  // namespace centrec::cli

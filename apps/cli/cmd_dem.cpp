@@ -102,6 +102,12 @@ int cmd_dem(const Args& args) {
   }
   app.read(args);
   o.out_given = app.count("--out") > 0;
+  // `dem` runs the case's dem: section (with the drum receiver: derives): any other key
+  // would change nothing it does.
+  for (const auto& [key, value] : o.overrides.keys)
+    if (key.rfind("dem.", 0) != 0 && key.rfind("receiver.", 0) != 0)
+      throw UsageError("--set " + key + "=" + value + ": `centrec dem` runs the case's dem: section (and the drum "
+                       "receiver: derives); " + key + " changes nothing it does (`centrec run` takes it)");
   check(o);
   const DemOptions& opt = o;
   // A resumed run takes its case from the checkpoint (a case file given too must match).
@@ -126,8 +132,8 @@ int cmd_dem(const Args& args) {
   // The command-line values enter the resolved case (outputs and checkpoint record what
   // ran) and pass the same checks as the case file's; effective_dem applies them, as for
   // `centrec run`.
-  cf = checked_overrides(cf, opt.overrides);
-  const config::DemCase dc = checked_dem(cf, opt.overrides);
+  cf = checked_overrides(cf, opt.overrides, "dem");
+  const config::DemCase dc = checked_dem(cf, opt.overrides, "dem");
   const io::OutputFolder out(opt.out_dir);
   const io::RunFolderClaim claim(opt.out_dir, "centrec dem " + (ck ? "--resume " + opt.resume_dir : opt.case_path),
                                  ck ? io::FolderUse::resume : folder_use(opt.overwrite));

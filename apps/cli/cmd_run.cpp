@@ -105,7 +105,7 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
     config::Overrides replica = o.overrides;
     replica.keys["dem.seed"] = std::to_string(base + k);
     replica.keys["dem.run.threads"] = std::to_string(per_child);
-    const Args flags = override_args(replica);
+    const Args flags = override_args(replica, "run");
     job.argv.insert(job.argv.end(), flags.begin(), flags.end());
     FigureOptions replica_figures = figures;
     replica_figures.none = figures.none || k > 0;  // replica 0 draws the figures
@@ -176,8 +176,13 @@ int cmd_run(const Args& args) {
   const config::Overrides& overrides = o.overrides;
   const config::CaseFile given = config::read_case_file(case_path);
   runs::check_run_options(given, o);
-  const config::CaseFile cf = checked_overrides(given, overrides);
-  if (cf.dem && cf.thermal && cf.thermal->film_source.from_dem()) checked_dem(cf, overrides);
+  if (given.thermal && !given.thermal->film_source.from_dem())
+    for (const char* flag : {"--cache", "--allow-small-drum", "--allow-unsteady"})
+      if (app.count(flag))
+        throw UsageError(std::string(flag) + " concerns the DEM, but " + case_path + " takes its film from " +
+                         given.thermal->film_source.text() + " (no DEM runs)");
+  const config::CaseFile cf = checked_overrides(given, overrides, "run");
+  if (cf.dem && cf.thermal && cf.thermal->film_source.from_dem()) checked_dem(cf, overrides, "run");
   if (replicas > 1 && !o.dem_from.empty())
     throw UsageError("--replicas runs the DEM with other seeds; --dem-from takes one earlier run: give one of them");
   if (replicas > 1) return run_replicas(app, args, case_path, out_dir, cf, o, replicas, figures, overwrite);
@@ -198,7 +203,7 @@ int cmd_run(const Args& args) {
   runs::write_coupled_h5(out_dir, r, runs::case_provenance(cf.path, cf.resolved_yaml));
   nlohmann::json s = runs::coupled_summary(r);
   s["resolved_config"] = cf.resolved_yaml;
-  if (!flags_text(overrides).empty()) s["command_line_overrides"] = flags_text(overrides);
+  if (!flags_text(overrides, "run").empty()) s["command_line_overrides"] = flags_text(overrides, "run");
   io::write_json_file(out_dir + "/summary.json", s);
 
   const auto& b = r.result.balance;

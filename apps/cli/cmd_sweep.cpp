@@ -49,19 +49,22 @@ void print_sweep_help(const CommandLine& app) {
       "--replicas`) and adds each figure's standard deviation over the seeds (*_std columns).\n");
 }
 
-// The `centrec run` of one point, its stdout/stderr in DIR/run.log: the point's values and
-// one DEM thread as the override flags write them (cli/case_overrides.hpp). Every point
-// runs with --allow-unsteady: a point whose DEM did not reach steady flow is reported as
-// such in the table rather than lost.
+// The `centrec run` of one point, its stdout/stderr in DIR/run.log: the point's values and,
+// for a DEM film, one DEM thread as the override flags write them (cli/case_overrides.hpp).
+// Every DEM point runs with --allow-unsteady: a point whose DEM did not reach steady flow is
+// reported as such in the table rather than lost.
 ChildJob point_job(const std::string& exe, const std::string& case_path, const std::string& cache,
-                   const std::string& dir, config::Overrides o, bool allow_small_drum, int replicas, bool overwrite) {
+                   const std::string& dir, config::Overrides o, bool has_dem, bool allow_small_drum, int replicas,
+                   bool overwrite) {
   io::ensure_directory(dir);
-  o.keys["dem.run.threads"] = "1";
-  ChildJob job{{exe, "run", case_path, "--out", dir, "--cache", cache}, dir + "/run.log"};
-  const Args flags = override_args(o);
+  ChildJob job{{exe, "run", case_path, "--out", dir, "--no-plots"}, dir + "/run.log"};
+  if (has_dem) {  // a DEM film: one thread, the sweep's cache
+    o.keys["dem.run.threads"] = "1";
+    job.argv.insert(job.argv.end(), {"--cache", cache, "--allow-unsteady"});
+    if (allow_small_drum) job.argv.push_back("--allow-small-drum");
+  }
+  const Args flags = override_args(o, "run");
   job.argv.insert(job.argv.end(), flags.begin(), flags.end());
-  job.argv.insert(job.argv.end(), {"--no-plots", "--allow-unsteady"});
-  if (allow_small_drum) job.argv.push_back("--allow-small-drum");
   if (overwrite) job.argv.push_back("--overwrite");
   if (replicas > 1) job.argv.insert(job.argv.end(), {"--replicas", std::to_string(replicas)});
   return job;
@@ -70,11 +73,11 @@ ChildJob point_job(const std::string& exe, const std::string& case_path, const s
 // The DEM cache key a point's run will look up, or "" when its film does not come from a
 // DEM: points with one key share one DEM run.
 std::string point_dem_key(const config::CaseFile& cf, const SweepPoint& p) {
+  if (!cf.dem || (cf.thermal && !cf.thermal->film_source.from_dem())) return "";
   config::Overrides o = p.overrides;
   o.keys["dem.run.threads"] = "1";
-  const config::CaseFile point = checked_overrides(cf, o);
-  if (!point.dem || (point.thermal && !point.thermal->film_source.from_dem())) return "";
-  return runs::dem_cache_key(point.resolved_yaml, checked_dem(point, o), io::code_version());
+  const config::CaseFile point = checked_overrides(cf, o, "run");
+  return runs::dem_cache_key(point.resolved_yaml, checked_dem(point, o, "run"), io::code_version());
 }
 
 // A point's swept value in sweep.json: a number when it reads as one.
@@ -127,7 +130,7 @@ int cmd_sweep(const Args& args) {
   }
   app.read(args);
   if (!grid_flags.empty() && !points_csv.empty()) throw UsageError("give --grid or --points, not both");
-  const config::CaseFile cf = checked_overrides(config::read_case_file(case_path), overrides);
+  const config::CaseFile cf = checked_overrides(config::read_case_file(case_path), overrides, "sweep");
   SweepGrid grid;
   if (!points_csv.empty()) {
     grid = points_from_csv(points_csv, overrides);
@@ -160,6 +163,7 @@ int cmd_sweep(const Args& args) {
 
   // The first point of each DEM runs first; the points that share it follow and read it
   // from the cache (two points starting one DEM at once would both run it).
+  const bool dem_film = cf.dem && !(cf.thermal && !cf.thermal->film_source.from_dem());
   const std::size_t n = grid.points.size();
   std::vector<std::string> dirs(n);
   std::vector<int> status(n, -1);
@@ -175,8 +179,8 @@ int cmd_sweep(const Args& args) {
   for (const std::vector<std::size_t>* phase : {&first, &after}) {
     std::vector<ChildJob> jobs;
     for (std::size_t k : *phase)
-      jobs.push_back(point_job(exe, case_path, cache, dirs[k], grid.points[k].overrides, allow_small_drum, replicas,
-                               overwrite));
+      jobs.push_back(point_job(exe, case_path, cache, dirs[k], grid.points[k].overrides, dem_film, allow_small_drum,
+                               replicas, overwrite));
     run_child_jobs(
         jobs, parallel,
         [&](std::size_t j) {

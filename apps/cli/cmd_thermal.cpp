@@ -41,7 +41,7 @@ int cmd_thermal(const Args& args) {
   add_override_flags(app, overrides, "thermal");
   app.read(args);
   const config::ThermalCase c =
-      config::thermal_case_of(checked_overrides(config::read_case_file(case_path), overrides));
+      config::thermal_case_of(checked_overrides(config::read_case_file(case_path), overrides, "thermal"));
   const io::OutputFolder out(out_dir);
   const io::RunFolderClaim claim(out_dir, "centrec thermal " + case_path, folder_use(overwrite));
   const auto t0 = std::chrono::steady_clock::now();
@@ -49,9 +49,10 @@ int cmd_thermal(const Args& args) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   runs::write_thermal_h5(out_dir + "/thermal.h5", c, r);
   io::write_text_atomically(out_dir + "/along_z.csv", runs::along_z_csv(r));
+  io::write_text_atomically(out_dir + "/film_profiles.csv", runs::film_profiles_csv(c.film));
   nlohmann::json summary = runs::thermal_summary(c, r);
   summary["wall_time_s"] = seconds;
-  if (!flags_text(overrides).empty()) summary["command_line_overrides"] = flags_text(overrides);
+  if (!flags_text(overrides, "thermal").empty()) summary["command_line_overrides"] = flags_text(overrides, "thermal");
   io::write_json_file(out_dir + "/summary.json", summary);
   const auto& b = r.balance;
   std::printf("centrec thermal %s: %s %dx%d, T_in %.2f K -> T_out %.2f K (%.2f C), efficiency %s, mdot %.4g kg/s\n",

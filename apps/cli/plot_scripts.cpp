@@ -60,7 +60,7 @@ std::string plot_script_dir() {
 }
 
 void add_figure_flags(CommandLine& app, FigureOptions& f) {
-  app.add_flag("--no-plots", f.none, "draw no figures");
+  CLI::Option* none = app.add_flag("--no-plots", f.none, "draw no figures");
   app.add_option("--figures", f.formats, "the figures' formats, comma-separated: png, pdf, svg, eps (default png)")
       ->option_text("LIST")
       ->check(CLI::Validator(
@@ -75,10 +75,12 @@ void add_figure_flags(CommandLine& app, FigureOptions& f) {
             }
             return any ? std::string() : std::string("no format given (e.g. png,pdf)");
           },
-          "LIST"));
+          "LIST"))
+      ->excludes(none);
   app.add_option("--dpi", f.dpi, "the figures' resolution in dots per inch (default 130)")
       ->check(integer_in(50, 1200))
-      ->option_text("N");
+      ->option_text("N")
+      ->excludes(none);
 }
 
 std::vector<std::string> figure_args(const FigureOptions& f) {

@@ -190,8 +190,8 @@ SweepGrid points_from_csv(const std::string& path, const config::Overrides& give
 void check_sweep_points(const config::CaseFile& cf, const SweepGrid& grid) {
   for (const SweepPoint& p : grid.points) {
     try {
-      const config::CaseFile point = checked_overrides(cf, p.overrides);
-      if (point.dem) checked_dem(point, p.overrides);
+      const config::CaseFile point = checked_overrides(cf, p.overrides, "sweep");
+      if (point.dem) checked_dem(point, p.overrides, "sweep");
     } catch (const config::ConfigError& e) {
       throw UsageError("the sweep point " + p.name + ": " + e.what());
     } catch (const std::invalid_argument& e) {

@@ -62,6 +62,11 @@ coupling::ReceiverOperatingPoint dem_operating_point(const DemCase& dem) {
 
 void apply_receiver(const ReceiverCase& r, DemCase& dem, bool follow_speed_and_flow) {
   auto& drum = dem.scene.drum;
+  // The same bound as a DEM drum's (config::dem_run_problem): a smaller receiver holds no film.
+  if (!(r.op.diameter > 20.0 * dem.scene.particle.diameter))
+    throw std::invalid_argument("receiver.diameter = " + std::to_string(r.op.diameter) +
+                                " m must exceed 20 particle diameters (" +
+                                std::to_string(20.0 * dem.scene.particle.diameter) + " m)");
   if (r.particle_diameter > 0.0 && std::abs(r.particle_diameter - dem.scene.particle.diameter) > 1e-9 * r.particle_diameter)
     throw std::invalid_argument("receiver.particle_diameter (" + std::to_string(r.particle_diameter) +
                                 " m) differs from the DEM's particle diameter (" +

@@ -71,6 +71,10 @@ void read_film(MapReader r, const std::string& case_dir, double particle_d, Ther
     af.drum_diameter = a.number("drum_diameter", af.drum_diameter, Range::open_closed(0.0, 100.0), "m",
                                 "diameter of the drum the film lines");
     af.length = a.number("length", af.length, Range::open_closed(0.0, 100.0), "m", "axial length of the film");
+    // The film lines the drum's wall: thicker than the drum's radius it would cross the axis.
+    if (!(af.thickness < 0.5 * af.drum_diameter))
+      a.fail("thickness", "the film (" + std::to_string(af.thickness) + " m) must be thinner than the drum's radius (" +
+                              std::to_string(0.5 * af.drum_diameter) + " m, film.analytic.drum_diameter / 2)");
     a.finish();
     c.film = th::analytic_film(af);
     c.film_source = {FilmSource::Kind::analytic, "", ""};
@@ -85,6 +89,10 @@ void read_film(MapReader r, const std::string& case_dir, double particle_d, Ther
     }
     if (!(c.film.length > 0.0) || !(c.film.drum_diameter > 0.0))
       r.fail("file", path + ": the film field needs positive 'length' and 'drum_diameter' attributes");
+    for (double t : c.film.t)
+      if (!(t < 0.5 * c.film.drum_diameter))
+        r.fail("file", path + ": the film is " + std::to_string(t) + " m thick in a drum of radius " +
+                           std::to_string(0.5 * c.film.drum_diameter) + " m: it would cross the axis");
     if (c.film.particle_diameter > 0.0 && std::abs(c.film.particle_diameter / particle_d - 1.0) > 1e-6)
       r.fail("file", path + ": the film field is for particles of d = " + std::to_string(c.film.particle_diameter) +
                          " m but thermal.material.d = " + std::to_string(particle_d) + " m (mismatched film file)");

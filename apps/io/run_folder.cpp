@@ -18,9 +18,14 @@ namespace fs = std::filesystem;
 namespace {
 // What the commands write into a run folder (docs/outputs.md): a folder holding any of them
 // holds a run.
-const char* const kRunFiles[] = {"summary.json",  "dem.h5",     "dem.xmf",     "drum.xmf", "mass_flow.csv",
-                                 "checkpoint.h5", "results.h5", "results.xmf", "film.h5",  "thermal.h5",
-                                 "thermal.xmf",   "sweep.json", "sweep.csv", "tracks", "paths.csv"};
+const char* const kRunFiles[] = {
+    "summary.json", "dem.h5",     "dem.xmf",    "drum.xmf",  "mass_flow.csv", "checkpoint.h5", "results.h5",
+    "results.xmf",  "film.h5",    "thermal.h5", "thermal.xmf", "sweep.json",  "sweep.csv",     "tracks",
+    "paths.csv",    "along_z.csv", "film_profiles.csv",
+    "liggghts",  // --engine liggghts's deck and dumps
+    // a LIGGGHTS deck (export-liggghts; liggghts/liggghts_export.hpp)
+    "in.centrec", "data.centrec", "drum.stl", "drum_ends.stl", "outlet.stl", "dumps", "mass_flow.txt",
+    "log.liggghts", "screen.liggghts"};
 
 bool alive(long pid) { return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM); }
 

@@ -50,6 +50,7 @@ void write_coupled_h5(const std::string& dir, const CoupledRun& r, const io::Pro
   f.commit();
   io::write_text_atomically(dir + "/results.xmf", thermal_xdmf("results.h5", r.result));
   io::write_text_atomically(dir + "/along_z.csv", along_z_csv(r.result));
+  io::write_text_atomically(dir + "/film_profiles.csv", film_profiles_csv(r.thermal.film));
   io::H5File film = io::H5File::create(dir + "/film.h5");
   io::write_provenance(film, p);
   film.set_attribute("/", "film_source", r.thermal.film_source.text());

@@ -192,6 +192,18 @@ std::string along_z_csv(const ThermalRun& r) {
   return c.str();
 }
 
+std::string film_profiles_csv(const thermal::FilmField& film) {
+  std::ostringstream c;
+  c.precision(10);
+  c << "z_m,eta_m,inside_film,u_m_s,phi,D_m2_s\n";
+  const std::size_t ne = film.neta();
+  for (std::size_t i = 0; i < film.nz(); ++i)
+    for (std::size_t j = 0; j < ne; ++j)
+      c << film.z[i] << ',' << film.eta[j] << ',' << (film.eta[j] <= film.t[i] ? 1 : 0) << ','
+        << film.u[i * ne + j] << ',' << film.phi[i * ne + j] << ',' << film.D[i * ne + j] << '\n';
+  return c.str();
+}
+
 void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const ThermalRun& r, const io::Provenance& p) {
   io::write_provenance(f, p);
   f.set_attribute("/", "title", c.title);
@@ -387,7 +399,14 @@ void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r) {
   else
     std::printf("  solar flux: %.4g W/m2 mean on the film (%.4g m2; open surface: no aperture)\n",
                 mean_flux(b.incident, A_film), A_film);
-  auto pct = [P](double x) { return P > 0 ? 100.0 * x / P : 0.0; };
+  // Shares of the aperture power, where there is sunlight to speak of (as the efficiency:
+  // none below 1e-6 of the balance's largest power).
+  const bool sunlit = P > 0 && P >= 1e-6 * thermal::receiver_balance_scale(b);
+  auto pct = [P, sunlit](double x) {
+    char t[32] = "no sunlight";
+    if (sunlit) std::snprintf(t, sizeof t, "%.2f %%", 100.0 * x / P);
+    return std::string(t);
+  };
   const thermal::ParticleData& particle = thermal::particle_data(c.particle);
   const double T_peak = r.fields.T.empty() ? b.T_out : *std::max_element(r.fields.T.begin(), r.fields.T.end());
   if (T_peak > particle.T_max || b.T_out > particle.T_max)
@@ -396,18 +415,18 @@ void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r) {
                 T_peak, b.T_out, particle.T_max, c.particle.c_str());
   std::printf("  receiver (%s): aperture %.6g W -> carried %.6g W, efficiency %s (carried / aperture power)\n",
               c.model.cavity.enabled ? "cavity" : "open surface", P, b.carried, efficiency_text(b.efficiency).c_str());
-  std::printf("  losses: reflected %.4g W (%.2f %%), emitted %.4g W (%.2f %%) through the %s, convective %.4g W "
-              "(%.2f %%, h %.3g W/(m2 K)), wall %.4g W (%.2f %%); balance residual %.2e of %s\n",
-              b.reflected_loss, pct(b.reflected_loss), b.emitted_loss, pct(b.emitted_loss),
+  std::printf("  losses: reflected %.4g W (%s), emitted %.4g W (%s) through the %s, convective %.4g W "
+              "(%s, h %.3g W/(m2 K)), wall %.4g W (%s); balance residual %.2e of %s\n",
+              b.reflected_loss, pct(b.reflected_loss).c_str(), b.emitted_loss, pct(b.emitted_loss).c_str(),
               c.model.cavity.enabled ? "aperture" : "open surface", b.convected + b.walls_convected,
-              pct(b.convected + b.walls_convected), b.h_cavity, b.wall + b.walls_insulation,
-              pct(b.wall + b.walls_insulation), b.receiver_residual / thermal::receiver_balance_scale(b),
+              pct(b.convected + b.walls_convected).c_str(), b.h_cavity, b.wall + b.walls_insulation,
+              pct(b.wall + b.walls_insulation).c_str(), b.receiver_residual / thermal::receiver_balance_scale(b),
               P >= thermal::receiver_balance_scale(b) ? "aperture power" : "the balance's largest power");
   const thermal::CavitySettings& cs = c.model.cavity;
   if (!c.model.cavity.enabled) return;
   if (cs.spillage > 0)
-    std::printf("  spillage: %.4g W (%.2f %%) on the front plate's outer face, not entering\n", b.spillage_loss,
-                pct(b.spillage_loss));
+    std::printf("  spillage: %.4g W (%s) on the front plate's outer face, not entering\n", b.spillage_loss,
+                pct(b.spillage_loss).c_str());
   if (cs.convection_correlation && (cs.wind_speed > 0 || cs.rotation_rad_s > 0))
     std::printf("  convection (docs/cavity_model.md): natural %.3g W/(m2 K) at Gr_L %.3g (extrapolated: fitted to large "
                 "central-receiver cavities), wind %.3g W/(m2 K) at %.3g m/s (Re_ap %.3g), "

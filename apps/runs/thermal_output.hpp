@@ -20,6 +20,9 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
 // thickness, the mixing-cup temperature leaving it, the surface temperature, the absorbed,
 // emitted, convected and wall fluxes and k_eff with its parts (docs/outputs.md).
 std::string along_z_csv(const ThermalRun& r);
+// DIR/film_profiles.csv: the film the thermal model solved on, one row per section and wall
+// distance (z, eta in m; inside_film 1 up to the section's thickness; u m/s, phi, D m2/s).
+std::string film_profiles_csv(const thermal::FilmField& film);
 // The XDMF 3 of the film grid in the file named h5_name (beside it): the cell centres as
 // points (z, eta, 0), quadrilaterals between them, the steady fields as point data.
 std::string thermal_xdmf(const std::string& h5_name, const ThermalRun& r);

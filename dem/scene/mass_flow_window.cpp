@@ -60,11 +60,11 @@ FlowSteadiness flow_steadiness(const std::vector<MassFlowSample>& log, const Sce
 }
 
 std::string FlowSteadiness::describe() const {
-  char line[200];
-  std::snprintf(line, sizeof line, "%s %.4g vs %s %.4g g/s (%+.1f %%), holdup %+.1f %% over %.3g s: %s",
-                slice ? "axial flow" : "outlet", measured * 1e3,
-                slice ? "target" : "feed", target * 1e3, 100.0 * flow_error, 100.0 * holdup_drift, window,
-                steady ? "steady" : "NOT steady");
+  char line[200], error[40] = "no flow yet to compare";  // a window before the first feed or target
+  if (target > 0.0) std::snprintf(error, sizeof error, "%+.1f %%", 100.0 * flow_error);
+  std::snprintf(line, sizeof line, "%s %.4g vs %s %.4g g/s (%s), holdup %+.1f %% over %.3g s: %s",
+                slice ? "axial flow" : "outlet", measured * 1e3, slice ? "target" : "feed", target * 1e3, error,
+                100.0 * holdup_drift, window, steady ? "steady" : "NOT steady");
   return line;
 }
 

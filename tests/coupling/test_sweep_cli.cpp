@@ -168,3 +168,40 @@ TEST(SweepCli, RefusesBadPointsBeforeAnyRuns) {
   }
   fs::remove_all(dir);
 }
+
+// A key that `centrec dem` sets by a flag of its own (--duration, --wall-rolling-model) reaches
+// each point's `centrec run`, which has no such flag, as --set: the points run.
+TEST(SweepCli, DemOnlyFlagKeysReachThePointsAsSet) {
+  const std::string dir = centrec::testing::temp_dir("sweep_dem_keys");
+  const std::string cmd = std::string(CENTREC_BINARY) + " sweep " + kCase + " --out " + dir +
+                          "/s --allow-small-drum --no-plots --parallel 1 --set dem.run.duration=0.1"
+                          " --grid thermal.T_in=800,873.15 > " + dir + "/log 2>&1";
+  const int rc = std::system(cmd.c_str());
+  std::ifstream log(dir + "/log");
+  const std::string out((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  std::ifstream point_log(dir + "/s/T_in800/run.log");
+  const std::string point((std::istreambuf_iterator<char>(point_log)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(rc, 0) << out << "\n" << point;
+  const auto s = nlohmann::json::parse(std::ifstream(dir + "/s/T_in800/summary.json"));
+  EXPECT_NE(s["resolved_config"].get<std::string>().find("duration: 0.1"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// A case whose film is given (no DEM) sweeps too: its points get no DEM flags.
+TEST(SweepCli, AFilmWithoutADemSweeps) {
+  const std::string dir = centrec::testing::temp_dir("sweep_thermal_only");
+  const std::string cmd = std::string(CENTREC_BINARY) + " sweep " + CENTREC_SOURCE_DIR +
+                          "/cases/thermal_centrec_uniform.yaml --out " + dir +
+                          "/s --no-plots --grid thermal.T_in=800,900 > " + dir + "/log 2>&1";
+  const int rc = std::system(cmd.c_str());
+  std::ifstream log(dir + "/log");
+  const std::string out((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  std::printf("%s\n", out.c_str());
+  ASSERT_EQ(rc, 0) << out;
+  const auto j = nlohmann::json::parse(std::ifstream(dir + "/s/sweep.json"));
+  ASSERT_EQ(j["points"].size(), 2u);
+  EXPECT_LT(j["points"][0]["T_out_K"].get<double>(), j["points"][1]["T_out_K"].get<double>());
+  EXPECT_EQ(j["points"][0]["T_in_K"].get<double>(), 800.0);
+  EXPECT_TRUE(j["points"][0]["seed"].is_null() || !j["points"][0].contains("seed"));
+  fs::remove_all(dir);
+}

@@ -388,3 +388,19 @@ TEST(CaseRefusals, RollingModelCoefficientsAreTheirModelsKeys) {
     }
   }
 }
+
+// Geometry that holds no film: a receiver smaller than 20 particle diameters (validate said
+// valid; the run spent its DEM, then failed on an empty film without naming a key), and an
+// analytic film thicker than its drum's radius (it ran: T_out 874 K, efficiency 0.13).
+TEST(CaseRefusals, AFilmThatCannotLineItsDrumIsRefused) {
+  std::ifstream in(CENTREC_SOURCE_DIR "/tests/coupling/small_coupled.yaml");
+  const std::string coupled((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string tiny = error_of(with(coupled, "receiver: {diameter: 0.12,", "receiver: {diameter: 0.0006,"));
+  EXPECT_HAS(tiny, "receiver");
+  EXPECT_HAS(tiny, "must exceed 20 particle diameters");
+  std::ifstream u(CENTREC_SOURCE_DIR "/cases/thermal_centrec_uniform.yaml");
+  const std::string uniform((std::istreambuf_iterator<char>(u)), std::istreambuf_iterator<char>());
+  const std::string thick = error_of(with(uniform, "drum_diameter: 1.0", "drum_diameter: 0.01"));
+  EXPECT_HAS(thick, "film.analytic.thickness");
+  EXPECT_HAS(thick, "thinner than the drum's radius");
+}

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/reliability/run_binary.hpp"
 #include "tests/test_case_dir.hpp"
@@ -171,6 +173,28 @@ TEST(CliUsage, ASliceHasNoFeedOrOutletFlow) {
     EXPECT_TRUE(s[key].is_null()) << key << " = " << s[key];
   EXPECT_TRUE(s["slice_mdot_kg_s"].is_number());
   EXPECT_EQ(s["slice_target_mdot_kg_s"].get<double>(), 0.002);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliUsage, FlagsThatDoNotApplyAreRefused) {
+  // Each was accepted and ignored without a word: DEM flags on a run without a DEM, a thermal
+  // key on `dem`, figures asked for with --no-plots.
+  const std::string dir = temp_dir("cli_not_apply");
+  const std::string src = CENTREC_SOURCE_DIR;
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"run", src + "/cases/thermal_centrec_uniform.yaml", "--out", dir + "/a", "--allow-unsteady"}, "--allow-unsteady"},
+      {{"run", src + "/cases/thermal_centrec_uniform.yaml", "--out", dir + "/b", "--cache", dir + "/c"}, "--cache"},
+      {{"dem", src + "/tests/coupling/small_coupled.yaml", "--out", dir + "/d", "--set", "thermal.T_in=900"},
+       "thermal.T_in"},
+      {{"run", src + "/cases/quickstart.yaml", "--out", dir + "/e", "--no-plots", "--figures", "pdf"}, "--figures"},
+  };
+  for (const auto& [args, expect] : cases) {
+    const BinaryRun r = run_binary(args, 60.0);
+    std::printf("%s %s: exit %d: %s", args[0].c_str(), expect.c_str(), r.exit_code, r.err.c_str());
+    EXPECT_EQ(r.exit_code, 2) << expect;
+    EXPECT_NE(r.err.find(expect), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(args[3] + "/summary.json")) << expect;
+  }
   std::filesystem::remove_all(dir);
 }
 

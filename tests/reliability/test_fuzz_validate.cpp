@@ -249,6 +249,8 @@ TEST(FuzzValidate, TheProbesCategoriesAreRefusedClearly) {
       {"geometry", edited(drum, "particles: 62000}", "particles: 1000, axial_from: 0.5}")},
       {"geometry", edited(drum, "particles: 62000}", "particles: 2000000}")},
       {"geometry", edited(quick, "particles: 6750}", "particles: 6750, axial_from: 0.01}")},
+      {"geometry", edited(quick, "receiver: {diameter: 0.12,", "receiver: {diameter: 0.0006,")},
+      {"geometry", edited(uniform, "drum_diameter: 1.0", "drum_diameter: 0.01")},
       {"feeder", edited(drum, "radial_height_d: 4", "radial_height_d: 45")},
       {"feeder", edited(drum, "radial_offset_d: 10", "radial_offset_d: 1")},
       {"feeder", edited(drum, "angle_deg: 0,", "angle_deg: 0, arc_width_d: 1000,")},

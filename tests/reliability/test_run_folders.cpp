@@ -110,3 +110,25 @@ TEST(RunFolders, ASweepGridWithARepeatedPointIsRefused) {
   EXPECT_NE(r.err.find("twice"), std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST(RunFolders, ADeckIsNotWrittenIntoARunOrOverAnotherDeck) {
+  // export-liggghts claims its folder as the runs do: not into another run's results, not over
+  // an earlier (perhaps hand-edited) deck unless --overwrite, which replaces it whole.
+  const std::string dir = centrec::testing::temp_dir("run_folders_deck");
+  const std::string kCase = kSource + "/tests/liggghts/small_drum.yaml";
+  ASSERT_EQ(run_binary({"thermal", kUniform, "--out", dir + "/R"}).exit_code, 0);
+  const auto into_run = run_binary({"export-liggghts", kCase, "--out", dir + "/R"});
+  std::printf("into a run's folder: exit %d: %s", into_run.exit_code, into_run.err.c_str());
+  EXPECT_NE(into_run.exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir + "/R/in.centrec"));
+  ASSERT_EQ(run_binary({"export-liggghts", kCase, "--out", dir + "/deck"}).exit_code, 0);
+  std::ofstream(dir + "/deck/in.centrec", std::ios::app) << "# edited by hand\n";
+  const std::string edited = slurp(dir + "/deck/in.centrec");
+  const auto again = run_binary({"export-liggghts", kCase, "--out", dir + "/deck"});
+  std::printf("over a deck: exit %d: %s", again.exit_code, again.err.c_str());
+  EXPECT_NE(again.exit_code, 0);
+  EXPECT_EQ(slurp(dir + "/deck/in.centrec"), edited);
+  ASSERT_EQ(run_binary({"export-liggghts", kCase, "--out", dir + "/deck", "--overwrite"}).exit_code, 0);
+  EXPECT_EQ(slurp(dir + "/deck/in.centrec").find("# edited by hand"), std::string::npos);
+  fs::remove_all(dir);
+}

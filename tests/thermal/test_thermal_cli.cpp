@@ -166,6 +166,28 @@ TEST(ThermalCli, CommandWritesH5AndSummary) {
               rows, previous, nlohmann::json::parse(text)["T_out_K"].get<double>(), worst);
   EXPECT_NEAR(previous, nlohmann::json::parse(text)["T_out_K"].get<double>(), 1e-6 * previous);
   EXPECT_LT(worst, 0.5);
+  // film_profiles.csv: the film solved on, a row per section and wall distance, the same
+  // numbers as thermal.h5's /film.
+  const auto fz = f.read("/film/z"), feta = f.read("/film/eta"), ft = f.read("/film/t");
+  const auto fu = f.read("/film/u"), fphi = f.read("/film/phi"), fD = f.read("/film/D");
+  std::ifstream profiles(dir + "/out/film_profiles.csv");
+  std::getline(profiles, header);
+  EXPECT_EQ(header, "z_m,eta_m,inside_film,u_m_s,phi,D_m2_s");
+  std::size_t n = 0;
+  for (; std::getline(profiles, line); ++n) {
+    double z, eta, u_, p_, D_;
+    int inside;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%d,%lf,%lf,%lf", &z, &eta, &inside, &u_, &p_, &D_), 6) << line;
+    ASSERT_LT(n, fu.size());
+    const std::size_t i = n / feta.size(), j = n % feta.size();
+    EXPECT_NEAR(z, fz[i], 1e-9 * std::abs(fz[i]) + 1e-15);
+    EXPECT_NEAR(eta, feta[j], 1e-9 * feta[j] + 1e-15);
+    EXPECT_EQ(inside, feta[j] <= ft[i] ? 1 : 0);
+    EXPECT_NEAR(u_, fu[n], 1e-9 * std::abs(fu[n]) + 1e-15);
+    EXPECT_NEAR(p_, fphi[n], 1e-9 * fphi[n] + 1e-15);
+    EXPECT_NEAR(D_, fD[n], 1e-9 * std::abs(fD[n]) + 1e-18);
+  }
+  EXPECT_EQ(n, fu.size());
   std::filesystem::remove_all(dir);
 }
 

@@ -22,7 +22,8 @@ TEST(CaseOverrides, ChildArgumentsReadBackAsTheOverrides) {
   o.keys["thermal.flux.q_film"] = "0.30000000000000004";
   o.speed_rpm = 160.08;
   o.mass_flow = 1e-7;
-  const cli::Args args = cli::override_args(o);
+  o.keys["dem.run.duration"] = "0.5";  // `dem`'s own flag; `run` takes it by --set
+  const cli::Args args = cli::override_args(o, "run");
   cli::CommandLine app("test");
   config::Overrides back;
   cli::add_override_flags(app, back, "run");
@@ -30,9 +31,16 @@ TEST(CaseOverrides, ChildArgumentsReadBackAsTheOverrides) {
   EXPECT_EQ(back.keys, o.keys);
   EXPECT_EQ(back.speed_rpm, o.speed_rpm);
   EXPECT_EQ(back.mass_flow, o.mass_flow);
-  // A key with a flag of its own goes by that flag, any other by --set.
-  EXPECT_EQ(cli::flags_text(o),
-            "--threads 3 --speed-rpm 160.08 --mass-flow 1e-07 --seed 2147483647 "
+  // A key with a flag of its own that the command takes goes by that flag, any other by --set.
+  std::string text;
+  for (const std::string& a : args) text += (text.empty() ? "" : " ") + a;
+  EXPECT_EQ(text,
+            "--threads 3 --speed-rpm 160.08 --mass-flow 1e-07 --seed 2147483647 --set dem.run.duration=0.5 "
+            "--set thermal.T_in=900.5 --set thermal.flux.q_film=0.30000000000000004");
+  // Messages name the flags as the command takes them: `dem` has --duration but no --seed.
+  EXPECT_EQ(cli::flags_text(o, "run"), text);
+  EXPECT_EQ(cli::flags_text(o, "dem"),
+            "--threads 3 --duration 0.5 --speed-rpm 160.08 --mass-flow 1e-07 --set dem.seed=2147483647 "
             "--set thermal.T_in=900.5 --set thermal.flux.q_film=0.30000000000000004");
   for (const char* name : {"--threads", "--speed-rpm", "--mass-flow", "--seed", "--set"})
     EXPECT_NE(std::find(cli::override_flag_names().begin(), cli::override_flag_names().end(), name),
