@@ -59,6 +59,9 @@ void read_flux_table_csv(const std::string& path, std::vector<double>& z, std::v
     if (b > kMaxFlux)
       throw std::runtime_error(at + "q = " + number(b) +
                                " W/m2 is above 2e7 W/m2, the largest flux on the film the case keys accept");
+    if (!z.empty() && !(a > z.back()))
+      throw std::runtime_error(at + "z = " + number(a) + " m does not increase (the row before it, line " +
+                               std::to_string(last_line) + ", has z = " + number(z.back()) + " m)");
     z.push_back(a);
     q.push_back(b);
     last_line = lineno;

@@ -16,7 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "io/film_field_h5.hpp"
+#include "io/h5_file.hpp"
 #include "tests/reliability/run_binary.hpp"
+#include "thermal/analytic_film.hpp"
 #include "tests/test_case_dir.hpp"
 #include "tests/yaml_abuse.hpp"
 
@@ -284,6 +287,79 @@ TEST(FuzzValidate, TheProbesCategoriesAreRefusedClearly) {
   for (const auto& c : order) {
     const auto& t = tally[c];
     std::printf("| %s | %d | %d | %d | %d | %d |\n", c.c_str(), t[0], t[1], t[2], t[3], t[4]);
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// The files a case reads beside it, mutated: the flux table (receiver_1m.yaml's CSV: numbers,
+// lines, bytes, truncation) and a stored film field (film.h5 with bytes flipped). `validate`
+// reads both as the runs do; each mutation must be accepted or refused in one line naming
+// the file, never crash or hang.
+TEST(FuzzValidate, MutatedTablesAndFilmFilesNeverCrashOrHang) {
+  const std::string dir = centrec::testing::fresh_dir("fuzz_tables");
+  const std::string table = slurp(CENTREC_SOURCE_DIR "/cases/receiver_flux.csv");
+  std::filesystem::copy_file(CENTREC_SOURCE_DIR "/cases/receiver_1m.yaml", dir + "/receiver_1m.yaml");
+  // A film field written as `centrec run` writes film.h5 (only the film: a flipped byte lands
+  // in what the reader reads), and a thermal case reading it.
+  const std::string film_h5 = dir + "/film.h5";
+  {
+    centrec::io::H5File f = centrec::io::H5File::create(film_h5);
+    centrec::io::write_film_field(f, centrec::thermal::analytic_film(centrec::thermal::AnalyticFilm{}));
+    f.commit();
+  }
+  std::string uniform = slurp(CENTREC_SOURCE_DIR "/cases/thermal_centrec_uniform.yaml");
+  const std::size_t a = uniform.find("film:\n"), b = uniform.find("thermal:\n");
+  ASSERT_TRUE(a != std::string::npos && b != std::string::npos && a < b);
+  std::ofstream(dir + "/film_case.yaml") << uniform.substr(0, a) << "film: {file: film.h5}\n" << uniform.substr(b);
+  ASSERT_EQ(run_binary({"validate", dir + "/film_case.yaml"}, 10.0).exit_code, 0) << "the unmutated film case";
+  const std::string film = slurp(film_h5);
+
+  struct Tally {
+    int tried = 0, refused = 0, accepted = 0, unclear = 0, crash = 0, hang = 0;
+  };
+  std::map<std::string, Tally> tally;
+  std::vector<std::string> order;
+  Mutator m{std::mt19937_64(20261206)};
+  auto judge = [&](const std::string& what, const std::string& file, const BinaryRun& r, const std::string& note) {
+    if (!tally.count(what)) order.push_back(what);
+    Tally& t = tally[what];
+    ++t.tried;
+    if (r.timed_out) {
+      ++t.hang;
+      ADD_FAILURE() << "hang (" << what << "): " << note;
+    } else if (r.signal != 0) {
+      ++t.crash;
+      ADD_FAILURE() << "signal " << r.signal << " (" << what << "): " << note;
+    } else if (r.exit_code == 0) {
+      ++t.accepted;
+    } else if (r.exit_code == 2 && r.err.find(file) != std::string::npos &&
+               std::count(r.err.begin(), r.err.end(), '\n') == 1) {
+      ++t.refused;
+    } else {
+      ++t.unclear;
+      ADD_FAILURE() << "unclear refusal (" << what << ", exit " << r.exit_code << "): " << r.err << note;
+    }
+  };
+  for (const char* cat : {"number", "structure", "bytes", "truncate"})
+    for (int k = 0; k < 25; ++k) {
+      const std::string text = m.apply(cat, table);
+      std::ofstream(dir + "/receiver_flux.csv", std::ios::binary | std::ios::trunc) << text;
+      judge(std::string("flux table: ") + cat, "receiver_flux.csv",
+            run_binary({"validate", dir + "/receiver_1m.yaml"}, 10.0), text.substr(0, 300));
+    }
+  for (int k = 0; k < 50; ++k) {
+    std::string bytes = film;
+    const int flips = 1 + static_cast<int>(m.pick(16));
+    for (int f = 0; f < flips; ++f) bytes[m.pick(bytes.size())] = static_cast<char>(m.pick(256));
+    std::ofstream(film_h5, std::ios::binary | std::ios::trunc) << bytes;
+    judge("film file: bytes", "film.h5", run_binary({"validate", dir + "/film_case.yaml"}, 10.0),
+          std::to_string(flips) + " bytes changed");
+  }
+  std::printf("| file | tried | refused clearly | accepted | unclear | crash | hang |\n|---|---|---|---|---|---|---|\n");
+  for (const auto& w : order) {
+    const Tally& t = tally[w];
+    std::printf("| %s | %d | %d | %d | %d | %d | %d |\n", w.c_str(), t.tried, t.refused, t.accepted, t.unclear,
+                t.crash, t.hang);
   }
   std::filesystem::remove_all(dir);
 }
