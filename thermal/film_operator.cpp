@@ -151,6 +151,16 @@ double FilmOperator::aperture_area() const {
   return kPi * ra * ra;
 }
 
+std::vector<double> FilmOperator::cavity_surface_z() const {
+  if (!cavity_) return {};
+  const Cavity& c = *cavity_;
+  std::vector<double> z(c.n, grid_.length);  // the front annulus, if any, at the aperture end
+  for (int k = 0; k < c.rings; ++k)
+    z[k] = 0.5 * grid_.length * (c.ring_begin[k] + c.ring_begin[k + 1]) / grid_.nz;
+  if (c.rings < c.n) z[c.rings] = 0.0;  // the back plate
+  return z;
+}
+
 void FilmOperator::setup_cavity() {
   const CavitySettings& cs = model_.cavity;
   const Material& mat = model_.material;

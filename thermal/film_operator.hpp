@@ -116,6 +116,10 @@ class FilmOperator : public OdeSystem {
   double film_area() const;
   double aperture_area() const;
   bool cavity() const { return cavity_ != nullptr; }
+  // Cavity model: the axial position of each enclosure surface, in the order of the
+  // per-surface outputs (cavity_T, ...): the rings' centres, the back plate at 0, the front
+  // annulus (if any) at the film's length L. Empty without a cavity.
+  std::vector<double> cavity_surface_z() const;
   const FilmModel& model() const { return model_; }
   std::vector<double> uniform_state(double T) const { return std::vector<double>(size(), T); }
 

@@ -74,7 +74,8 @@ RunFolderClaim::RunFolderClaim(const std::string& dir, const std::string& comman
       lock_.clear();
       throw std::invalid_argument(dir + " is in use by another centrec run (process " + std::to_string(pid) + ": " +
                                   owner_command.substr(owner_command.find(' ') + 1) +
-                                  "): wait for it to end or give another --out");
+                                  "): wait for it to end or give another --out (if process " + std::to_string(pid) +
+                                  " is no centrec run, remove " + lock_ + ")");
     }
     ::unlink(lock_.c_str());  // its process is gone (killed): the folder is judged by its files
   }
@@ -84,6 +85,10 @@ RunFolderClaim::RunFolderClaim(const std::string& dir, const std::string& comman
   try {
     if (use == FolderUse::resume) {
       if (!checkpoint) throw std::invalid_argument(dir + " holds no checkpoint.h5 to resume from");
+      // A finished run keeps its last checkpoint (a settled start reads it); resuming it
+      // would run its last stretch again and rewrite its results.
+      if (finished)
+        throw std::invalid_argument(dir + " holds a finished run (summary.json): there is nothing to resume");
       return;
     }
     if (files.empty()) return;

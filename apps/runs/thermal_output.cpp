@@ -256,10 +256,23 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
     f.attach_scale(name, 1, "/grid/xi", "xi");
   }
   if (!fl.cavity_T.empty()) {
-    // Enclosure surfaces: rings (z = 0 .. L), back plate, front annulus (if any).
-    f.write("/steady/cavity/T", fl.cavity_T, "K");
-    f.write("/steady/cavity/solar_irradiation", fl.cavity_solar_irradiation, "W/m2");
-    f.write("/steady/cavity/thermal_irradiation", fl.cavity_thermal_irradiation, "W/m2");
+    // Enclosure surfaces: rings (z = 0 .. L), back plate, front annulus (if any); their axial
+    // positions as the dimension scale (the back plate at 0, the annulus at L).
+    f.write("/steady/cavity/surface_z", r.op->cavity_surface_z(), "m");
+    f.set_attribute("/steady/cavity", "surfaces",
+                    "the film's rings from the back (z = ring centre), then the back plate (z = 0), then the front "
+                    "annulus if the aperture is smaller than the drum (z = L)");
+    const struct {
+      const char* name;
+      const std::vector<double>& values;
+      const char* units;
+    } per_surface[] = {{"T", fl.cavity_T, "K"},
+                       {"solar_irradiation", fl.cavity_solar_irradiation, "W/m2"},
+                       {"thermal_irradiation", fl.cavity_thermal_irradiation, "W/m2"}};
+    for (const auto& q : per_surface) {
+      f.write(std::string("/steady/cavity/") + q.name, q.values, q.units);
+      f.attach_scale(std::string("/steady/cavity/") + q.name, 0, "/steady/cavity/surface_z", "surface");
+    }
   }
   const std::vector<double>* xdmf_values[] = {&fl.T, &fl.k_n, &fl.k_bed, &fl.k_rad, &fl.k_mix, &g.u, &g.phi, &g.D};
   static_assert(sizeof(xdmf_values) / sizeof(xdmf_values[0]) == std::size(kXdmfFields), "one array per XDMF field");

@@ -132,3 +132,22 @@ TEST(RunFolders, ADeckIsNotWrittenIntoARunOrOverAnotherDeck) {
   EXPECT_EQ(slurp(dir + "/deck/in.centrec").find("# edited by hand"), std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST(RunFolders, AFinishedRunIsNotResumed) {
+  // A finished run keeps its checkpoint (a settled start reads it): --resume ran its last
+  // stretch again and rewrote its results without a word.
+  const std::string dir = centrec::testing::temp_dir("run_folders_finished") + "/D";
+  ASSERT_EQ(run_binary({"dem", kSource + "/tests/outputs/tiny_drum.yaml", "--out", dir, "--no-plots", "--set",
+                        "dem.run.checkpoint_interval=300"},
+                       120.0)
+                .exit_code,
+            0);
+  ASSERT_TRUE(fs::exists(dir + "/checkpoint.h5"));
+  const std::string summary = slurp(dir + "/summary.json");
+  const auto r = run_binary({"dem", "--resume", dir, "--no-plots"}, 120.0);
+  std::printf("exit %d: %s", r.exit_code, r.err.c_str());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("holds a finished run"), std::string::npos);
+  EXPECT_EQ(slurp(dir + "/summary.json"), summary);
+  fs::remove_all(fs::path(dir).parent_path());
+}

@@ -265,3 +265,29 @@ TEST(ThermalCli, BudgetWritesItsTableAndRefusesADemFilmItDoesNotHave) {
   EXPECT_NE(out.find("--film"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
+
+// A cavity run's per-surface outputs carry the surfaces' axial positions as their dimension
+// scale: the rings' centres from the back, then the back plate at z = 0, then the front
+// annulus (the shipped cavity case has one) at z = L.
+TEST(ThermalCli, CavitySurfacesHaveTheirAxialPositions) {
+  const std::string dir = temp_dir("cavity_z");
+  ASSERT_EQ(run_centrec("thermal " CENTREC_SOURCE_DIR "/cases/thermal_centrec_cavity.yaml --out " + dir + "/out"), 0);
+  const io::H5File f = io::H5File::open_read(dir + "/out/thermal.h5");
+  const auto z = f.read("/steady/cavity/surface_z"), T = f.read("/steady/cavity/T");
+  const double L = f.read("/grid/z").back() + 0.5 * (f.read("/grid/z")[1] - f.read("/grid/z")[0]);
+  ASSERT_EQ(z.size(), T.size());
+  ASSERT_GE(z.size(), 3u);
+  const std::size_t rings = z.size() - 2;  // the back plate and the front annulus follow the rings
+  std::printf("%zu surfaces: rings from %.4g to %.4g m, back plate %.4g m, annulus %.4g m (L = %.4g m)\n", z.size(),
+              z[0], z[rings - 1], z[rings], z[rings + 1], L);
+  for (std::size_t k = 0; k < rings; ++k) {
+    EXPECT_GT(z[k], 0.0);
+    EXPECT_LT(z[k], L);
+    if (k > 0) EXPECT_GT(z[k], z[k - 1]);
+  }
+  EXPECT_NEAR(z[0] + z[rings - 1], L, 1e-9 * L);  // equal rings: symmetric centres
+  EXPECT_EQ(z[rings], 0.0);
+  EXPECT_NEAR(z[rings + 1], L, 1e-12 * L);
+  EXPECT_EQ(f.string_attribute("/steady/cavity/surface_z", "units"), "m");
+  std::filesystem::remove_all(dir);
+}
