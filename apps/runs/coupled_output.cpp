@@ -125,7 +125,7 @@ nlohmann::json coupled_summary(const CoupledRun& r) {
     if (!p.min_as.empty()) j["coupling"][p.min_as] = *std::min_element(p.values.begin(), p.values.end());
     if (!p.max_as.empty()) j["coupling"][p.max_as] = *std::max_element(p.values.begin(), p.values.end());
   }
-  j["warnings"] = r.warnings;
+  for (const std::string& w : r.warnings) j["warnings"].push_back(w);
   if (r.has_receiver) {
     const auto& s = r.scale;
     j["scaling"] = {{"receiver_diameter_m", r.receiver.op.diameter},

@@ -188,9 +188,16 @@ void DemRun::flush_tracks() {
 }
 
 void DemRun::spin_up() {
-  char what[128];
-  std::snprintf(what, sizeof what, "the drum runs to t = %.4g s (dem.run.duration) so the film fills and its outflow settles",
-                dc_.run.duration);
+  // What the run will simulate, stated up front: run.duration is the shortest spin-up, not a
+  // limit on the whole run (docs/running.md).
+  char what[400];
+  std::snprintf(what, sizeof what,
+                "the drum runs to t = %.4g s (dem.run.duration) so the film fills and its outflow settles, on until "
+                "steady for at most %.4g s more (dem.run.max_extension), then %.4g sampled turns (%.4g s): %.4g-%.4g s "
+                "in all",
+                dc_.run.duration, dc_.run.extension_cap(), dc_.sampling.turns, dc_.sampling.turns * period_,
+                dc_.run.duration + dc_.sampling.turns * period_,
+                dc_.run.duration + dc_.run.extension_cap() + dc_.sampling.turns * period_);
   progress_.phase(name(Phase::spin_up), what);
   // An underfed drum never reaches the state asked: stop after its first turn, not hours later.
   const bool fed = dc_.scene.feeder.enabled && !dc_.scene.slice.enabled && dc_.scene.feeder.mass_flow > 0.0;

@@ -312,6 +312,22 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
   io::write_film_field(f, c.film, "/film");
 }
 
+std::vector<std::string> thermal_warnings(const config::ThermalCase& c, const ThermalRun& r) {
+  std::vector<std::string> w;
+  const thermal::ParticleData& particle = thermal::particle_data(c.particle);
+  const double T_out = r.balance.T_out;
+  const double T_peak = r.fields.T.empty() ? T_out : *std::max_element(r.fields.T.begin(), r.fields.T.end());
+  if (T_peak > particle.T_max || T_out > particle.T_max) {
+    char b[300];
+    std::snprintf(b, sizeof b,
+                  "the film reaches %.1f K (outlet %.1f K), above the %.1f K %s's data hold (docs/particle_data.md): "
+                  "the properties there are extrapolated",
+                  T_peak, T_out, particle.T_max, c.particle.c_str());
+    w.push_back(b);
+  }
+  return w;
+}
+
 nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r) {
   const thermal::FilmBalance& b = r.balance;
   const thermal::FilmGrid& g = r.op->grid();
@@ -337,6 +353,7 @@ nlohmann::json thermal_summary(const config::ThermalCase& c, const ThermalRun& r
                 {"seed", nullptr},
                 {"dt_s", nullptr}};
   j["efficiency"] = b.efficiency;
+  j["warnings"] = thermal_warnings(c, r);  // a coupled run adds what it allowed
   j["powers_W"] = balance_json(b);
   j["receiver"] = receiver_json(c, b, *r.op);
   j["balance_residual_relative"] = b.residual / thermal::film_balance_scale(b);
@@ -420,12 +437,7 @@ void print_receiver_report(const config::ThermalCase& c, const ThermalRun& r) {
     if (sunlit) std::snprintf(t, sizeof t, "%.2f %%", 100.0 * x / P);
     return std::string(t);
   };
-  const thermal::ParticleData& particle = thermal::particle_data(c.particle);
-  const double T_peak = r.fields.T.empty() ? b.T_out : *std::max_element(r.fields.T.begin(), r.fields.T.end());
-  if (T_peak > particle.T_max || b.T_out > particle.T_max)
-    std::printf("  note: the film reaches %.1f K (outlet %.1f K), above the %.1f K %s's data hold "
-                "(docs/particle_data.md): the properties there are extrapolated\n",
-                T_peak, b.T_out, particle.T_max, c.particle.c_str());
+  for (const std::string& w : thermal_warnings(c, r)) std::printf("  WARNING: %s\n", w.c_str());
   std::printf("  receiver (%s): aperture %.6g W -> carried %.6g W, efficiency %s (carried / aperture power)\n",
               c.model.cavity.enabled ? "cavity" : "open surface", P, b.carried, efficiency_text(b.efficiency).c_str());
   std::printf("  losses: reflected %.4g W (%s), emitted %.4g W (%s) through the %s, convective %.4g W "

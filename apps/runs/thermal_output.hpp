@@ -4,6 +4,7 @@
 // headline figures as JSON for DIR/summary.json.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "config/case_thermal.hpp"
 #include "io/h5_file.hpp"
@@ -20,6 +21,9 @@ void write_thermal_groups(io::H5File& f, const config::ThermalCase& c, const The
 // thickness, the mixing-cup temperature leaving it, the surface temperature, the absorbed,
 // emitted, convected and wall fluxes and k_eff with its parts (docs/outputs.md).
 std::string along_z_csv(const ThermalRun& r);
+// What a user of this thermal solution must know (summary.json "warnings", and stdout): a
+// film hotter than its particle's data hold.
+std::vector<std::string> thermal_warnings(const config::ThermalCase& c, const ThermalRun& r);
 // DIR/film_profiles.csv: the film the thermal model solved on, one row per section and wall
 // distance (z, eta in m; inside_film 1 up to the section's thickness; u m/s, phi, D m2/s).
 std::string film_profiles_csv(const thermal::FilmField& film);
