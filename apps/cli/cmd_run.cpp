@@ -241,7 +241,7 @@ int cmd_run(const Args& args) {
               k_mean(&thermal::KeffSection::mixing));
   std::printf(
       "  wall time: DEM %.1f s, coupling %.3f s, thermal %.3f s; wrote "
-      "%s/{summary.json,results.h5,results.xmf,film.h5,along_z.csv}\n",
+      "%s/{summary.json,results.h5,results.xmf,film.h5,along_z.csv,film_profiles.csv}\n",
       r.dem_seconds, r.mapping_seconds, r.thermal_seconds, out_dir.c_str());
   std::vector<std::string> plot_args = {out_dir};
   if (r.film_from_dem()) plot_args.insert(plot_args.end(), {"--dem", r.dem_dir});

@@ -19,11 +19,14 @@ import sys
 
 def quoted_block(readme):
     """The README's fenced block that starts with `centrec run cases/quickstart.yaml`."""
-    text = open(readme).read()
-    for block in re.findall(r"```\n(.*?)```", text, re.S):
-        lines = block.rstrip("\n").split("\n")
-        if lines and lines[0].strip() == "centrec run cases/quickstart.yaml":
-            return lines
+    block, inside = [], False
+    for line in open(readme).read().split("\n"):
+        if line.startswith("```"):
+            if inside and block and block[0].strip() == "centrec run cases/quickstart.yaml":
+                return block
+            block, inside = [], not inside
+        elif inside:
+            block.append(line)
     sys.exit("README.md quotes no block starting with `centrec run cases/quickstart.yaml`")
 
 
