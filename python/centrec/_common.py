@@ -127,6 +127,28 @@ class Folder:
         return f"{type(self).__name__}({os.fspath(self.path)!r})"
 
 
+class HeadlineFigures:
+    """The headline figures of a folder's summary.json (apps/runs/headline_figures.cpp): a run's
+    own, or a replicas folder's means over its seeds."""
+
+    summary: Mapping
+
+    @property
+    def T_out(self) -> Optional[float]:
+        """Outlet mixing-cup temperature (K), summary.json ``T_out_K``."""
+        return number(self.summary, "/T_out_K")
+
+    @property
+    def efficiency(self) -> Optional[float]:
+        """Receiver efficiency (1), carried / aperture power, summary.json ``efficiency``."""
+        return number(self.summary, "/efficiency")
+
+    @property
+    def k_eff(self) -> Optional[float]:
+        """Film-mean effective conductivity (W/(m K)), summary.json ``k_eff.film_mean.k_eff``."""
+        return number(self.summary, "/k_eff/film_mean/k_eff")
+
+
 class LazyFolders(Sequence):
     """A list of output folders, each read by :func:`centrec.load` when first indexed."""
 

@@ -7,14 +7,14 @@ seeds, plus a ``replicas`` block) and one run folder per seed, ``replica_<k>/``
 from __future__ import annotations
 
 from functools import cached_property
-from typing import List, Optional
+from typing import List
 
 import pandas as pd
 
-from ._common import Folder, LazyFolders, number, resolve_child
+from ._common import Folder, HeadlineFigures, LazyFolders, resolve_child
 
 
-class Replicas(Folder):
+class Replicas(HeadlineFigures, Folder):
     """A ``centrec run --replicas N`` folder.
 
     * ``summary``: summary.json (dict); its headline figures are the means over the seeds.
@@ -37,20 +37,6 @@ class Replicas(Folder):
         if "replicas" not in self.summary:
             raise ValueError(f"{self.path} is not a centrec replicas folder: its summary.json has no 'replicas'")
 
-    @property
-    def T_out(self) -> Optional[float]:
-        """Mean outlet temperature over the seeds (K)."""
-        return number(self.summary, "/T_out_K")
-
-    @property
-    def efficiency(self) -> Optional[float]:
-        """Mean receiver efficiency over the seeds (1)."""
-        return number(self.summary, "/efficiency")
-
-    @property
-    def k_eff(self) -> Optional[float]:
-        """Mean film-mean effective conductivity over the seeds (W/(m K))."""
-        return number(self.summary, "/k_eff/film_mean/k_eff")
 
     @property
     def seeds(self) -> List[int]:

@@ -15,7 +15,7 @@ import pandas as pd
 import xarray as xr
 
 from . import _h5
-from ._common import Folder, csv_unit, number, read_csv
+from ._common import Folder, HeadlineFigures, csv_unit, read_csv
 
 # The results file of each command (apps/runs/coupled_output.cpp, apps/runs/thermal_output.cpp).
 RESULT_FILES = ("results.h5", "thermal.h5")
@@ -25,7 +25,7 @@ RESULT_FILES = ("results.h5", "thermal.h5")
 _NOT_FIELD = ("film", "coupling", "xdmf")
 
 
-class Run(Folder):
+class Run(HeadlineFigures, Folder):
     """A ``centrec run`` or ``centrec thermal`` folder.
 
     Attributes (read on first use):
@@ -58,22 +58,6 @@ class Run(Folder):
             raise ValueError(f"{self.path} is not a centrec run or thermal folder: it has no {missing}")
         self.results_file: Path = self.path / found[0]
         self.kind = "run" if found[0] == "results.h5" else "thermal"
-
-    # Headline figures of summary.json.
-    @property
-    def T_out(self) -> float:
-        """Outlet mixing-cup temperature (K), summary.json ``T_out_K``."""
-        return number(self.summary, "/T_out_K")
-
-    @property
-    def efficiency(self) -> Optional[float]:
-        """Receiver efficiency (1), carried / aperture power, summary.json ``efficiency``."""
-        return number(self.summary, "/efficiency")
-
-    @property
-    def k_eff(self) -> Optional[float]:
-        """Film-mean effective conductivity (W/(m K)), summary.json ``k_eff.film_mean.k_eff``."""
-        return number(self.summary, "/k_eff/film_mean/k_eff")
 
     # Tables and fields.
     def groups(self) -> List[str]:
