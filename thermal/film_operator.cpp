@@ -23,6 +23,8 @@ constexpr double kPi = 3.14159265358979323846;
 FilmOperator::FilmOperator(const FilmField& film, const FilmModel& model, const FilmGridSpec& spec)
     : grid_(build_film_grid(film, spec, model.material.rho_s)), model_(model), advection_(spec.advection) {
   model_.flux.check();
+  model_.flux_time.check();
+  model_.flow_time.check();
   // The bed model shares the particle parameters with the material (one source of truth).
   model_.bed.k_s = model_.material.k_s;
   model_.bed.epsilon = model_.material.epsilon;

@@ -105,6 +105,18 @@ class FilmOperator : public OdeSystem {
   // When frozen, the flux and flow time factors are taken at t = 0 whatever t is given
   // (a steady state for the initial operating point).
   void freeze_inputs(bool frozen) { frozen_ = frozen; }
+  // Replace a time history between integrations (the outlet controller sets the mass flow
+  // per control interval, thermal/outlet_controller.hpp). Only inputs_at reads them, so
+  // nothing else changes; an integrator over this operator must be reinitialised at the
+  // time of the change. Throws std::invalid_argument for a bad factor (TimeFactor::check).
+  void set_flux_time(const TimeFactor& f) {
+    f.check();
+    model_.flux_time = f;
+  }
+  void set_flow_time(const TimeFactor& f) {
+    f.check();
+    model_.flow_time = f;
+  }
 
   FilmBalance balance(double t, const double* y);
   ThermalFields fields(double t, const double* y);

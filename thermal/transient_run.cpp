@@ -22,12 +22,9 @@ TransientResult run_transient(FilmOperator& op, const std::vector<double>& y0, c
   op.freeze_inputs(false);
   // Kinks of the inputs inside (0, t_end): restart points.
   std::vector<double> kinks;
-  for (const TimeFactor* f : {&op.model().flux_time, &op.model().flow_time}) {
-    double b[4];
-    const int n = f->breakpoints(b);
-    for (int k = 0; k < n; ++k)
-      if (b[k] > 0.0 && b[k] < s.t_end) kinks.push_back(b[k]);
-  }
+  for (const TimeFactor* f : {&op.model().flux_time, &op.model().flow_time})
+    for (const double b : f->breakpoints())
+      if (b > 0.0 && b < s.t_end) kinks.push_back(b);
   std::sort(kinks.begin(), kinks.end());
   TransientResult r;
   std::vector<double> y = y0;
