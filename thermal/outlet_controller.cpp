@@ -93,11 +93,13 @@ ControlledTransientResult run_controlled_transient(FilmOperator& op, const std::
     if (s.control) {
       const double e = b.T_out - r.T_set;
       const double trial = integral + e * s.dt_control;
-      const double u = 1.0 + r.kp * e + r.ki * trial;
+      const double eta = s.feedforward_efficiency;
+      const double base = std::isnan(eta) ? 1.0 : (op.model().flux_time.at(t) - (1.0 - eta)) / eta;
+      const double u = base + r.kp * e + r.ki * trial;
       // Conditional integration: no integration that drives a saturated command further out.
       const bool winding = (u > s.m_max && e > 0.0) || (u < s.m_min && e < 0.0);
       if (!winding) integral = trial;
-      m_cmd = std::clamp(1.0 + r.kp * e + r.ki * integral, s.m_min, s.m_max);
+      m_cmd = std::clamp(base + r.kp * e + r.ki * integral, s.m_min, s.m_max);
       op.set_flow_time(lag(m, m_cmd, t, s.tau_film));
       cv.reinit(t, y);  // u's slope changes here
     }

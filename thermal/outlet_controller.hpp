@@ -26,6 +26,13 @@
 // not grow while the flow is saturated (a deep cloud at m_min) and the loop recovers without an
 // overshoot of its stored error.
 //
+// Feedforward (feedforward_efficiency = eta, the steady efficiency at the set point): a plant
+// measures its flux (DNI), so the flow the energy balance needs can be commanded before T_out
+// moves. At the set point the film's losses hang on its temperatures, not on the flux, so they
+// stay (1 - eta) P0 when the aperture power falls to f P0 and the carried power is
+// f P0 - (1 - eta) P0 = eta m P0 at the same temperature rise: m_ff = (f - (1 - eta)) / eta.
+// The PI adds to it: m_cmd = m_ff(f(t_k)) + kp e_k + ki I_k (clamped as above).
+//
 // Tuning (tune_outlet_controller): the plant's step response is measured on the given operator
 // (open loop, the commanded factor stepped 1 -> 1 + step at t = 0 through the lag, the flux held
 // at its t = 0 value) and fitted by first order plus dead time, K e^(-theta s) / (tau_1 s + 1),
@@ -56,6 +63,9 @@ struct ControlledTransientSettings {
   double ki = std::numeric_limits<double>::quiet_NaN();  // 1/(K s)
   double m_min = 0.2, m_max = 2.0;                       // limits of the commanded flow factor
   double tau_film = 3.0;                                 // s, >= 0: the film's first-order lag behind the command
+  // Feedforward from the measured flux (NaN: off): the steady efficiency eta at the set point.
+  // The PI then corrects around m_ff = (f - (1 - eta)) / eta instead of around 1 (below).
+  double feedforward_efficiency = std::numeric_limits<double>::quiet_NaN();
   IntegratorSettings integrator;
 };
 

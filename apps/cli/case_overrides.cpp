@@ -50,7 +50,7 @@ const Flag kFlags[] = {
     {"--wall-rolling-model", "relative|liggghts", "dem export-liggghts",
      "dem.contacts.wall_rolling_model instead of the case's (liggghts: LIGGGHTS' form)",
      "dem.contacts.wall_rolling_model"},
-    {"--set", "KEY=VALUE", "dem run sweep thermal",
+    {"--set", "KEY=VALUE", "dem run sweep thermal operate",
      "any case key, as its dotted path (--set thermal.flux.q_film=3e5); repeatable"},
 };
 

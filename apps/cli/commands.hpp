@@ -24,6 +24,7 @@ int cmd_sweep(const Args& args);
 int cmd_export_liggghts(const Args& args);
 int cmd_keys(const Args& args);
 int cmd_paths(const Args& args);
+int cmd_operate(const Args& args);
 
 // The table `main` dispatches on; add new subcommands here.
 const std::vector<Command>& commands();

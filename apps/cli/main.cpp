@@ -24,6 +24,8 @@ const std::vector<Command>& commands() {
       {"budget", "error budget: the inputs' stated uncertainties propagated to T_out, efficiency, k_eff", cmd_budget},
       {"paths", "a fed drum's residence times and its particles heated along their own paths", cmd_paths},
       {"sweep", "a study: coupled runs over a grid of case keys (speed x mass flow by default) in parallel", cmd_sweep},
+      {"operate", "the speed and mass flow that reach a target outlet temperature, from an operating map",
+       cmd_operate},
       {"validate", "check a YAML case; print the DEM drum it runs and its fully resolved configuration", cmd_validate},
       {"keys", "print every case-file key with type, default, range, unit and meaning (Markdown)", cmd_keys},
   };

@@ -1,0 +1,80 @@
+#pragma once
+// The operating point that reaches a target outlet temperature (docs/operating.md): the
+// case's thermal model (its flux, inlet temperature, cavity) on the film surrogate of an
+// operating map, the mass flow found at each speed of the stable window by bracketed root
+// finding (T_out falls with the mass flow), the speed chosen by a stated criterion.
+#include <string>
+#include <vector>
+
+#include "config/case_thermal.hpp"
+#include "coupling/film_surrogate.hpp"
+#include "runs/operating_map.hpp"
+#include "thermal/outlet_controller.hpp"
+
+namespace centrec::runs {
+
+// The case's thermal model on the surrogate's film at (speed, mass flow), the mass flow
+// imposed on the surrogate film by one velocity factor as a coupled run does
+// (coupling/film_mass_flow.hpp): the factor says how far the surrogate's own flow is off.
+class SurrogateThermal {
+ public:
+  SurrogateThermal(config::ThermalCase base, const coupling::FilmSurrogate& surrogate, double receiver_diameter);
+  struct Answer {
+    double T_out = 0.0, efficiency = 0.0, T_surface_max = 0.0;  // K, -, K
+    double thickness_d = 0.0;                                   // film thickness in particle diameters
+    double velocity_factor = 0.0;                               // imposed flow / the surrogate film's own
+    double seconds = 0.0;                                       // wall time of the steady solve
+  };
+  Answer at(double speed_rpm, double mass_flow) const;
+  // The thermal case at (speed, mass flow): the surrogate's film, its flow imposed.
+  config::ThermalCase case_at(double speed_rpm, double mass_flow) const;
+  // The same thermal model on a given film (a map point's own, to check the surrogate's).
+  Answer on_film(thermal::FilmField film, double mass_flow) const;
+
+ private:
+  config::ThermalCase on_film_case(thermal::FilmField film, double mass_flow, double* velocity_factor) const;
+  config::ThermalCase base_;
+  const coupling::FilmSurrogate& surrogate_;
+  double receiver_diameter_;
+};
+
+struct OperatingCandidate {
+  double speed_rpm = 0.0, mass_flow = 0.0;  // rpm, kg/s
+  bool found = false;
+  std::string why_not;                      // when not found
+  SurrogateThermal::Answer answer;
+  WindowMargin margin;
+  int solves = 0;
+};
+
+struct OperatingAnswer {
+  double target_T_out = 0.0;
+  std::string criterion;
+  std::vector<OperatingCandidate> candidates;  // one per speed tried, ascending
+  int best = -1;                               // index into candidates, -1: none reaches the target
+};
+
+// Tries n_speeds speeds evenly over the window's speeds; at each, the mass flow in the
+// window's span at that speed whose T_out is the target within 0.02 K. The best is the one
+// of highest efficiency among those with a film at least min_thickness_d thick.
+OperatingAnswer find_operating_point(const OperatingMap& m, const SurrogateThermal& th, double target_T_out,
+                                     int n_speeds, double min_thickness_d);
+
+}  // namespace centrec::runs
+
+namespace centrec::runs {
+
+// A flux history at an operating point (docs/operating.md "A passing cloud"): the steady
+// state there, then the same flux series three ways: the mass flow held, the PI controller on
+// T_out alone, and the PI with the flux fed forward (thermal/outlet_controller.hpp). The
+// controller's gains are tuned once on the film's measured step response.
+struct CloudResponse {
+  thermal::ControlledTransientResult fixed, pi, feedforward;
+  thermal::OutletTuning tuning;
+  double residence_time = 0.0;  // s, the film's holdup / mass flow at the operating point
+  double efficiency = 0.0;      // steady, at the operating point (the feedforward's eta)
+};
+CloudResponse cloud_response(const SurrogateThermal& th, double speed_rpm, double mass_flow,
+                             const thermal::TimeFactor& flux, thermal::ControlledTransientSettings s);
+
+}  // namespace centrec::runs

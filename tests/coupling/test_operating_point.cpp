@@ -1,0 +1,255 @@
+// The film surrogate, the operating map's window and the operating-point search
+// (docs/operating.md), on synthetic maps whose films follow known laws of speed and mass
+// flow: a law the surrogate's basis holds is reproduced to round-off, a known operating
+// point is found again, and the window and its margins are those of the map's grid.
+#include <gtest/gtest.h>
+
+#include "tests/test_case_dir.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "config/case_thermal.hpp"
+#include "coupling/film_surrogate.hpp"
+#include "io/film_field_h5.hpp"
+#include "runs/operating_map.hpp"
+#include "runs/operating_point.hpp"
+
+namespace {
+
+using centrec::coupling::FilmSurrogate;
+using centrec::coupling::SurrogateSample;
+using centrec::thermal::FilmField;
+
+constexpr double kD = 1.2e-3;
+
+// The synthetic film at (rpm, mdot): ln t and u_surface planes in (ln rpm, ln mdot), phi
+// uniform, D uniform with a plane in ln rpm; u linear in the depth s = eta / t. With
+// `curved`, ln t gains a term in (ln mdot)^2 that only the quadric holds.
+// `receiver` scales the geometry: 1 is the shipped 1 m uniform-flux film (50 rpm, 3 kg/s at
+// the centre of the map), 0.12 the quickstart's receiver (160 rpm, 0.0357 kg/s).
+struct Geometry {
+  double diameter = 1.0, length = 1.0, rpm0 = 50.0, mdot0 = 3.0, u0 = 0.26, t0 = 6e-3;
+};
+FilmField synthetic_film(double rpm, double mdot, bool curved = false, const Geometry& g = {}) {
+  const double x = std::log(rpm / g.rpm0), y = std::log(mdot / g.mdot0);
+  const double t = g.t0 * std::exp(0.5 * y - 0.3 * x + (curved ? 0.8 * y * y : 0.0));
+  const double U = g.u0 * (1.0 + 0.2 * y + 0.08 * x), D = 1e-6 * (1.0 + 0.1 * x);
+  FilmField f;
+  f.z = {0.0, 0.5 * g.length, g.length};
+  const auto s = centrec::coupling::surrogate_depths();
+  for (double sk : s) f.eta.push_back(sk * t);
+  f.t.assign(3, t);
+  for (int i = 0; i < 3; ++i)
+    for (double sk : s) {
+      f.u.push_back(U * sk);
+      f.phi.push_back(0.55);
+      f.D.push_back(D);
+    }
+  f.drum_diameter = g.diameter;
+  f.length = g.length;
+  f.particle_diameter = kD;
+  f.omega = rpm * 2.0 * M_PI / 60.0;
+  f.mdot = mdot;
+  return f;
+}
+
+std::vector<SurrogateSample> grid_samples(bool curved) {
+  std::vector<SurrogateSample> s;
+  for (double rpm : {40.0, 50.0, 60.0})
+    for (double m : {2.0, 3.0, 4.5}) s.push_back({rpm, m, synthetic_film(rpm, m, curved)});
+  return s;
+}
+
+// A sweep folder as `centrec sweep` writes it: sweep.json and one folder per point with its
+// film.h5; the point (60 rpm, 4.5 kg/s) failed with a refusal in its run.log.
+std::string synthetic_map(const Geometry& g = {}, const std::string& name_of_map = "operating_map") {
+  const std::string dir = centrec::testing::fresh_dir(name_of_map);
+  nlohmann::json points = nlohmann::json::array();
+  for (double rpm : {0.8 * g.rpm0, g.rpm0, 1.2 * g.rpm0})
+    for (double m : {2.0 / 3.0 * g.mdot0, g.mdot0, 1.5 * g.mdot0}) {
+      const std::string name = "p" + std::to_string(rpm) + "_" + std::to_string(m);
+      std::filesystem::create_directories(dir + "/" + name);
+      nlohmann::json row = {{"dir", "elsewhere/" + name}, {"speed_rpm", rpm}, {"mass_flow_kg_s", m}};
+      if (rpm == 1.2 * g.rpm0 && m == 1.5 * g.mdot0) {
+        row["status"] = 1;
+        std::ofstream(dir + "/" + name + "/run.log")
+            << "DEM progress\ncentrec run: case.yaml: the DEM film is not at steady flow: holdup +40 %\n";
+      } else {
+        row.update({{"status", 0}, {"dem_flow_steady", true}, {"flow_closure", 1.004}, {"T_out_K", 1000.0}});
+        auto h5 = centrec::io::H5File::create(dir + "/" + name + "/film.h5");
+        centrec::io::write_film_field(h5, synthetic_film(rpm, m, false, g));
+        h5.commit();
+      }
+      points.push_back(row);
+    }
+  nlohmann::json axes = {{{"key", "speed_rpm"}, {"column", "speed_rpm"}},
+                         {{"key", "mass_flow"}, {"column", "mass_flow_kg_s"}}};
+  std::ofstream(dir + "/sweep.json") << nlohmann::json{{"case", "case.yaml"}, {"axes", axes}, {"points", points}};
+  return dir;
+}
+
+// The shipped uniform-flux thermal case on a small grid (the film is set per point).
+centrec::config::ThermalCase small_thermal_case() {
+  auto c = centrec::config::read_thermal_case(std::string(CENTREC_SOURCE_DIR) +
+                                              "/cases/thermal_centrec_uniform.yaml");
+  c.grid.nz = 40;
+  c.grid.nxi = 12;
+  return c;
+}
+
+}  // namespace
+
+TEST(FilmSurrogate, ReproducesALawItsBasisHolds) {
+  const FilmSurrogate s(grid_samples(false));
+  const FilmField want = synthetic_film(45.0, 2.5), got = s.film_at(45.0, 2.5);
+  ASSERT_EQ(got.neta(), want.neta());
+  double worst = std::abs(got.t[0] / want.t[0] - 1.0);
+  for (std::size_t k = 0; k < want.u.size(); ++k) {
+    worst = std::max(worst, std::abs(got.u[k] - want.u[k]) / 0.26);
+    worst = std::max(worst, std::abs(got.D[k] - want.D[k]) / 1e-6);
+    worst = std::max(worst, std::abs(got.phi[k] - want.phi[k]));
+  }
+  std::printf("off-grid film at 45 rpm, 2.5 kg/s: worst relative error %.2e\n", worst);
+  EXPECT_LT(worst, 1e-9);
+  for (const auto& e : s.leave_one_out()) {
+    std::printf("  %-28s %-7s rms %.2e %s (range %.3g)\n", e.quantity.c_str(), basis_name(e.basis), e.rms,
+                e.unit.c_str(), e.range);
+    EXPECT_LT(e.rms, 1e-9 * std::max(1.0, e.range)) << e.quantity;
+  }
+}
+
+TEST(FilmSurrogate, TakesTheQuadricOnlyWhereTheMapIsCurved) {
+  const FilmSurrogate plane(grid_samples(false)), curved(grid_samples(true));
+  const auto err = curved.leave_one_out();
+  std::printf("curved thickness: %s basis, leave-one-out rms %.3g d over a range of %.3g d\n",
+              basis_name(curved.thickness_basis()), err[0].rms, err[0].range);
+  EXPECT_EQ(curved.thickness_basis(), centrec::coupling::SurrogateBasis::quadric);
+  EXPECT_LT(err[0].rms, 1e-9 * err[0].range);
+  // The same curvature seen through a plane: what the leave-one-out error would have shown.
+  std::vector<SurrogateSample> few = grid_samples(true);
+  few.resize(7);  // 7 points: too few for a quadric and its check
+  const FilmSurrogate forced_plane(few);
+  EXPECT_EQ(forced_plane.thickness_basis(), centrec::coupling::SurrogateBasis::plane);
+  EXPECT_GT(forced_plane.leave_one_out()[0].rms, 0.01);
+  (void)plane;
+}
+
+TEST(FilmSurrogate, RefusesPointsOnOneLine) {
+  std::vector<SurrogateSample> s;
+  for (double m : {2.0, 3.0, 4.5, 5.0}) s.push_back({50.0, m, synthetic_film(50.0, m)});
+  try {
+    FilmSurrogate bad(s);
+    FAIL() << "a map at one speed was fitted";
+  } catch (const std::invalid_argument& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("one line"), std::string::npos) << e.what();
+  }
+}
+
+TEST(OperatingMap, ReadsTheWindowAndTheReasonsOfAFailedPoint) {
+  const auto m = centrec::runs::read_operating_map(synthetic_map());
+  ASSERT_EQ(m.points.size(), 9u);
+  int usable = 0;
+  for (const auto& p : m.points) {
+    usable += p.usable;
+    if (!p.usable) {
+      std::printf("not usable: %.0f rpm, %.1f kg/s: %s\n", p.speed_rpm, p.mass_flow, p.state.c_str());
+      EXPECT_NE(p.state.find("not at steady flow: holdup +40 %"), std::string::npos) << p.state;
+    }
+  }
+  EXPECT_EQ(usable, 8);
+  EXPECT_TRUE(m.inside(45.0, 4.0));
+  EXPECT_TRUE(m.inside(55.0, 2.5));
+  EXPECT_FALSE(m.inside(55.0, 4.0));  // the cell of the failed point
+  EXPECT_FALSE(m.inside(35.0, 2.5));  // off the map
+  const auto w = m.margin(45.0, 2.5);
+  EXPECT_DOUBLE_EQ(w.speed_below, 5.0);
+  EXPECT_DOUBLE_EQ(w.speed_above, 15.0);
+  EXPECT_DOUBLE_EQ(w.flow_below, 0.5);
+  EXPECT_DOUBLE_EQ(w.flow_above, 2.0);
+  const auto span = m.flow_span(55.0);
+  EXPECT_DOUBLE_EQ(span.first, 2.0);
+  EXPECT_DOUBLE_EQ(span.second, 3.0);
+}
+
+TEST(OperatingPoint, FindsAKnownPointOfASyntheticSurrogate) {
+  const auto m = centrec::runs::read_operating_map(synthetic_map());
+  const FilmSurrogate s(centrec::runs::surrogate_samples(m, 1.0));
+  const centrec::runs::SurrogateThermal th(small_thermal_case(), s, 1.0);
+  // The truth: the thermal model on the synthetic law's own film at 45 rpm, 2.5 kg/s.
+  const auto truth = th.on_film(synthetic_film(45.0, 2.5), 2.5);
+  const auto a = centrec::runs::find_operating_point(m, th, truth.T_out, 5, 0.0);
+  ASSERT_EQ(a.candidates.size(), 5u);  // 40, 45, ..., 60 rpm
+  const auto& c = a.candidates[1];
+  std::printf("target %.3f K: at %.1f rpm found %.5f kg/s (truth 2.5), T_out %.3f K, %d solves of %.3f s\n",
+              truth.T_out, c.speed_rpm, c.mass_flow, c.answer.T_out, c.solves, c.answer.seconds);
+  ASSERT_TRUE(c.found) << c.why_not;
+  EXPECT_DOUBLE_EQ(c.speed_rpm, 45.0);
+  EXPECT_NEAR(c.mass_flow, 2.5, 2.5e-3);
+  EXPECT_NEAR(c.answer.T_out, truth.T_out, 0.02);
+  // The best is the found candidate of highest efficiency, and inside the window.
+  ASSERT_GE(a.best, 0);
+  for (const auto& o : a.candidates)
+    if (o.found) {
+      EXPECT_LE(o.answer.efficiency, a.candidates[a.best].answer.efficiency);
+    }
+  EXPECT_TRUE(m.inside(a.candidates[a.best].speed_rpm, a.candidates[a.best].mass_flow));
+  // A target no mass flow of the window reaches is reported, not extrapolated.
+  const auto hot = centrec::runs::find_operating_point(m, th, truth.T_out + 2000.0, 2, 0.0);
+  EXPECT_EQ(hot.best, -1);
+  EXPECT_NE(hot.candidates[0].why_not.find("T_out spans"), std::string::npos) << hot.candidates[0].why_not;
+}
+
+namespace {
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+}  // namespace
+
+TEST(OperateCli, AnswersFromASyntheticMapOfTheQuickstartReceiver) {
+  // The quickstart receiver's map, 128-192 rpm x 0.0238-0.0536 kg/s, its thermal model on a
+  // small grid; the outlet temperature between the map's extremes.
+  const Geometry g{0.12, 0.171, 160.0, 0.0357, 0.016, 6e-3};
+  const std::string map = synthetic_map(g, "operate_cli_map");
+  const std::string out = centrec::testing::fresh_dir("operate_cli") + "/out";
+  const std::string quickstart = std::string(CENTREC_SOURCE_DIR) + "/cases/quickstart.yaml";
+  const std::string cmd = std::string(CENTREC_BINARY) + " operate " + quickstart + " --map " + map +
+                          " --target-outlet 1100 --speeds 3 --out " + out +
+                          " --no-plots --set thermal.grid.nz=40 --set thermal.grid.nxi=12 --transient " +
+                          std::string(CENTREC_SOURCE_DIR) + "/cases/cloud_70pct_60s.csv";
+  const int status = std::system((cmd + " > " + out + ".log 2>&1").c_str());
+  const std::string log = read_text(out + ".log");
+  std::printf("%s\n", log.c_str());
+  ASSERT_EQ(status, 0) << log;
+  const auto j = nlohmann::json::parse(read_text(out + "/operate.json"));
+  ASSERT_TRUE(j["operating_point"].is_object());
+  EXPECT_NEAR(j["operating_point"]["T_out_K"].get<double>(), 1100.0, 0.02);
+  EXPECT_EQ(j["map_points"].size(), 9u);
+  EXPECT_EQ(j["surrogate"]["leave_one_out"].size(), 4u);
+  // The synthetic law is one the surrogate holds: its T_out leave-one-out error is round-off.
+  EXPECT_LT(j["surrogate"]["T_out_max_K"].get<double>(), 1e-6);
+  const std::string grid = read_text(out + "/operate_map.csv");
+  EXPECT_EQ(std::count(grid.begin(), grid.end(), '\n'), 82);  // header + 9 x 9
+  // The cloud at the answer: one row a second for 200 s; a controller that uses the flux does
+  // better than the held flow (the figures of docs/operating.md).
+  const std::string series = read_text(out + "/operate_transient.csv");
+  EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 202);
+  const auto& tr = j["transient"];
+  EXPECT_LT(tr["PI + flux feedforward"]["peak_deviation_K"].get<double>(),
+            tr["mass flow held"]["peak_deviation_K"].get<double>());
+  EXPECT_FALSE(tr["film_response_measured"].get<bool>());
+  // The map is fixed by its DEM runs: a DEM key is refused, naming the rule.
+  const int refused = std::system((std::string(CENTREC_BINARY) + " operate " + quickstart + " --map " + map +
+                                   " --target-outlet 1100 --out " + out + "2 --set dem.seed=3 > " + out +
+                                   ".refused 2>&1")
+                                      .c_str());
+  EXPECT_NE(refused, 0);
+  EXPECT_NE(read_text(out + ".refused").find("only thermal.* keys"), std::string::npos) << read_text(out + ".refused");
+}
