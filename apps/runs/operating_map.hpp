@@ -42,8 +42,9 @@ struct OperatingMap {
   std::pair<double, double> flow_span(double speed_rpm) const;
 };
 
-// Reads DIR/sweep.json of a `centrec sweep` whose axes are speed_rpm and mass_flow_kg_s (any
-// other axis is refused: a film map is over the operating point only). Throws
+// Reads DIR/sweep.json of a `centrec sweep` whose axes are speed_rpm and mass_flow_kg_s, and
+// perhaps each point's DEM start (dem.initial_film.*: a film near the point's own state); any
+// other axis is refused: a film map is over the operating point only. Throws
 // std::runtime_error naming the file and what is missing.
 OperatingMap read_operating_map(const std::string& sweep_dir);
 
