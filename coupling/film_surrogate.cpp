@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -137,6 +138,16 @@ void FilmSurrogate::fit_all(const SurrogateBasis* forced) {
         std::abs(f.particle_diameter - f0.particle_diameter) > 1e-9 * f0.particle_diameter)
       throw std::invalid_argument(
           "film surrogate: the map's films differ in length, sections or particle size (one receiver per map)");
+    // A slice's film is one section repeated along z; a drum's varies along z, which the
+    // surrogate's numbers (one profile per point) do not hold.
+    for (std::size_t i = 1; i < f.nz(); ++i)
+      if (std::abs(f.t[i] - f.t[0]) > 1e-9 * f.t[0]) {
+        char at[96];
+        std::snprintf(at, sizeof at, "%.6g rpm, %.6g kg/s", p.speed_rpm, p.mass_flow);
+        throw std::invalid_argument(std::string("film surrogate: the film at ") + at +
+                                    " varies along z (a fed drum's); the surrogate fits slices' films, uniform "
+                                    "along z");
+      }
     Profiles pr;
     const double t = f.t[0];
     pr.log_t = std::log(t);

@@ -44,7 +44,7 @@ struct SurrogateError {
 class FilmSurrogate {
  public:
   // Throws std::invalid_argument with fewer than 3 points, points that do not span both
-  // speed and mass flow, or films of different geometry.
+  // speed and mass flow, films of different geometry, or a film that varies along z.
   explicit FilmSurrogate(std::vector<SurrogateSample> samples);
 
   // The film at (speed, mass flow): geometry and z sections of the map's first film,

@@ -152,6 +152,18 @@ TEST(FilmSurrogate, RefusesPointsOnOneLine) {
   }
 }
 
+TEST(FilmSurrogate, RefusesAFilmThatVariesAlongZ) {
+  std::vector<SurrogateSample> s = grid_samples(false);
+  s[4].film.t[2] *= 0.9;  // a drum's film, thinner downstream
+  try {
+    FilmSurrogate bad(s);
+    FAIL() << "a film varying along z was fitted as a slice's";
+  } catch (const std::invalid_argument& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("varies along z"), std::string::npos) << e.what();
+  }
+}
+
 TEST(OperatingMap, ReadsTheWindowAndTheReasonsOfAFailedPoint) {
   const auto m = centrec::runs::read_operating_map(synthetic_map());
   ASSERT_EQ(m.points.size(), 9u);
