@@ -8,14 +8,15 @@
 
 ``load`` returns a :class:`Run` (``centrec run`` / ``centrec thermal``), a :class:`DemRun`
 (``centrec dem``, a DEM cache entry), a :class:`Sweep` (``centrec sweep``) or a
-:class:`Replicas` (``centrec run --replicas``). docs/python.md has a worked example;
+:class:`Replicas` (``centrec run --replicas``) or an :class:`Operate` (``centrec operate``). docs/python.md has a worked example;
 docs/outputs.md describes every file.
 """
 from ._detect import load
 from .dem import DemRun
+from .operate import Operate
 from .replicas import Replicas
 from .run import Run
 from .sweep import Sweep
 
 __version__ = "0.1.0"
-__all__ = ["load", "Run", "DemRun", "Sweep", "Replicas", "__version__"]
+__all__ = ["load", "Run", "DemRun", "Sweep", "Replicas", "Operate", "__version__"]

@@ -7,15 +7,17 @@ from typing import Union
 
 from ._common import read_json
 from .dem import DemRun
+from .operate import Operate
 from .replicas import Replicas
 from .run import RESULT_FILES, Run
 from .sweep import Sweep
 
 
-def load(path: Union[str, os.PathLike]) -> Union[Run, DemRun, Sweep, Replicas]:
+def load(path: Union[str, os.PathLike]) -> Union[Run, DemRun, Sweep, Replicas, Operate]:
     """Read a centrec output folder as the object of its kind.
 
     * ``sweep.csv``                              -> :class:`Sweep` (``centrec sweep``)
+    * ``operate.json``                           -> :class:`Operate` (``centrec operate``)
     * ``summary.json`` with a ``replicas`` block -> :class:`Replicas` (``centrec run --replicas``)
     * ``summary.json`` + ``results.h5``          -> :class:`Run` (``centrec run``)
     * ``summary.json`` + ``thermal.h5``          -> :class:`Run` (``centrec thermal``)
@@ -29,6 +31,8 @@ def load(path: Union[str, os.PathLike]) -> Union[Run, DemRun, Sweep, Replicas]:
     has = lambda name: (p / name).is_file()  # noqa: E731
     if has("sweep.csv"):
         return Sweep(p)
+    if has("operate.json"):
+        return Operate(p)
     if not has("summary.json"):
         if has("checkpoint.h5"):
             raise ValueError(f"{p} holds an interrupted DEM run (checkpoint.h5 without summary.json): "

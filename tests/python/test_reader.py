@@ -338,6 +338,60 @@ class ReplicasFolder(unittest.TestCase):
         print(f"{rep.path}: T_out {rep.T_out:.3f} +- {rep.spread['std']['/T_out_K']:.3f} K over seeds {rep.seeds}")
 
 
+class OperateFolder(unittest.TestCase):
+    """`centrec operate` of the small coupled case on a map made of the fixture run's film at
+    2 speeds x 3 mass flows: one film everywhere, its inlet section repeated along z (a slice's
+    film; the fixture's is a fed drum's), so the surrogate is that film, and the target, the
+    fixture's own T_out, lies inside the map's T_out range."""
+
+    @classmethod
+    def setUpClass(cls):
+        fixture = os.path.join(ARGS.fixture, "run")
+        cls.fixture_T_out = read_json(os.path.join(fixture, "summary.json"))["T_out_K"]
+        m = os.path.join(ARGS.work, "operate_map")
+        points = []
+        for rpm in (150.0, 170.0):
+            for mdot in (0.03, 0.0357, 0.042):
+                d = os.path.join(m, f"p{rpm:g}_{mdot:g}")
+                os.makedirs(d)
+                shutil.copy(os.path.join(fixture, "film.h5"), d)
+                with h5py.File(os.path.join(d, "film.h5"), "r+") as f:
+                    for name in ("t", "u", "phi", "D", "u_std", "phi_std", "D_std"):
+                        if name in f["film"]:
+                            f["film"][name][...] = f["film"][name][0]
+                points.append({"dir": d, "status": 0, "speed_rpm": rpm, "mass_flow_kg_s": mdot,
+                               "dem_flow_steady": True, "flow_closure": 1.0})
+        axes = [{"key": "speed_rpm", "column": "speed_rpm"}, {"key": "mass_flow", "column": "mass_flow_kg_s"}]
+        with open(os.path.join(m, "sweep.json"), "w") as fh:
+            json.dump({"case": "small_coupled.yaml", "axes": axes, "points": points}, fh)
+        out = os.path.join(ARGS.work, "operate")
+        case = os.path.join(ARGS.source, "tests", "coupling", "small_coupled.yaml")
+        run_centrec(["operate", case, "--map", m, "--target-outlet", repr(cls.fixture_T_out), "--speeds", "2",
+                     "--out", out, "--no-plots"], out + ".log")
+        cls.op = centrec.load(out)
+
+    def test_kind(self):
+        self.assertIsInstance(self.op, centrec.Operate)
+
+    def test_answer_is_the_fixture_point(self):
+        b = self.op.operating_point
+        print(f"target {self.op.target_T_out:.4f} K: {b['speed_rpm']:g} rpm, {b['mass_flow_kg_s']:.6f} kg/s, "
+              f"T_out {b['T_out_K']:.4f} K")
+        self.assertAlmostEqual(self.op.target_T_out, self.fixture_T_out, delta=1e-9)
+        self.assertAlmostEqual(b["T_out_K"], self.fixture_T_out, delta=0.02)
+        self.assertTrue(0.03 <= b["mass_flow_kg_s"] <= 0.042)
+        self.assertEqual(len(self.op.candidates), 2)
+        self.assertTrue(self.op.candidates["found"].all())
+
+    def test_tables(self):
+        self.assertEqual(len(self.op.map_points), 6)
+        self.assertTrue(self.op.map_points["usable"].all())
+        self.assertEqual(list(self.op.surrogate_errors["quantity"])[0], "film thickness")
+        self.assertEqual(len(self.op.map), 81)
+        self.assertEqual(self.op.map.attrs["units"]["T_out_K"], "K")
+        self.assertIsNone(self.op.transient)
+
+
 class NotAnOutputFolder(unittest.TestCase):
     def folder(self, name, files=()):
         path = os.path.join(ARGS.work, "not_outputs", name)
