@@ -31,7 +31,8 @@ bool parse_field(const std::string& field, double& v) {
 }
 }  // namespace
 
-TwoColumnTable read_two_column_csv(const std::string& path, const std::string& a_name, const std::string& b_name) {
+TwoColumnTable read_two_column_csv(const std::string& path, const std::string& a_name, const std::string& b_name,
+                                   TableHeader header_rule) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open the table");
   const std::string header = a_name + "," + b_name;
@@ -46,12 +47,17 @@ TwoColumnTable read_two_column_csv(const std::string& path, const std::string& a
     const std::string at = path + ":" + std::to_string(lineno) + ": ";
     const std::size_t comma = line.find(',');
     if (!have_header) {
-      // The header names the columns and their units, so a table in other units is refused.
-      const bool matches =
-          comma != std::string::npos && trim(line.substr(0, comma)) == a_name && trim(line.substr(comma + 1)) == b_name;
-      if (!matches) throw std::runtime_error(at + "expected the header line '" + header + "', found '" + line + "'");
       have_header = true;
-      continue;
+      if (header_rule == TableHeader::optional) {
+        double first = 0.0;
+        if (!parse_field(line.substr(0, comma), first)) continue;  // a header of any text
+      } else {
+        // The header names the columns and their units, so a table in other units is refused.
+        const bool matches = comma != std::string::npos && trim(line.substr(0, comma)) == a_name &&
+                             trim(line.substr(comma + 1)) == b_name;
+        if (!matches) throw std::runtime_error(at + "expected the header line '" + header + "', found '" + line + "'");
+        continue;
+      }
     }
     if (comma == std::string::npos)
       throw std::runtime_error(at + "expected two comma-separated numbers '" + header + "', found '" + line + "'");
@@ -69,7 +75,8 @@ TwoColumnTable read_two_column_csv(const std::string& path, const std::string& a
     t.line.push_back(lineno);
   }
   t.lines = lineno;
-  if (!have_header) throw std::runtime_error(path + ":" + std::to_string(lineno) + ": no header line '" + header + "'");
+  if (!have_header && header_rule == TableHeader::required)
+    throw std::runtime_error(path + ":" + std::to_string(lineno) + ": no header line '" + header + "'");
   return t;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Reads a solar flux table for thermal::FluxProfile: CSV with two columns, z in m and q in
-// W/m2, one row per line; '#' comments and one header line of text are allowed.
+// W/m2, one row per line; '#' comments and one header line of text are allowed (the rows read
+// by thermal/table_csv.hpp, the table's own checks here).
 #include <string>
 #include <vector>
 
