@@ -259,28 +259,32 @@ std::vector<SurrogateError> FilmSurrogate::leave_one_out() const {
   if (n < 4) throw std::invalid_argument("film surrogate: a leave-one-out check needs at least 4 map points");
   const Fit* fits[4] = {&t_, &u_, &phi_, &D_};
   const double d = samples_[0].film.particle_diameter;
-  std::vector<SurrogateError> out;
+  std::vector<SurrogateError> out(4);
+  double lo[4], hi[4], sum[4] = {0.0, 0.0, 0.0, 0.0};
   for (int q = 0; q < 4; ++q) {
-    SurrogateError e;
-    e.quantity = kQuantities[q].name;
-    e.unit = kQuantities[q].unit;
-    e.basis = fits[q]->basis;
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo, sum = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const FilmSurrogate rest = without(i);
-      const Fit* rf[4] = {&rest.t_, &rest.u_, &rest.phi_, &rest.D_};
-      const std::vector<double>* mine[4] = {nullptr, &profiles_[i].u, &profiles_[i].phi, &profiles_[i].D};
-      const std::vector<double> log_t = {profiles_[i].log_t};
-      const double truth = kQuantities[q].figure(q == 0 ? log_t : *mine[q], d);
+    out[q].quantity = kQuantities[q].name;
+    out[q].unit = kQuantities[q].unit;
+    out[q].basis = fits[q]->basis;
+    lo[q] = std::numeric_limits<double>::infinity(), hi[q] = -lo[q];
+  }
+  // One refit per point left out serves all four quantities.
+  for (std::size_t i = 0; i < n; ++i) {
+    const FilmSurrogate rest = without(i);
+    const Fit* rf[4] = {&rest.t_, &rest.u_, &rest.phi_, &rest.D_};
+    const std::vector<double> log_t = {profiles_[i].log_t};
+    const std::vector<double>* mine[4] = {&log_t, &profiles_[i].u, &profiles_[i].phi, &profiles_[i].D};
+    for (int q = 0; q < 4; ++q) {
+      const double truth = kQuantities[q].figure(*mine[q], d);
       const double guess = kQuantities[q].figure(
           evaluate(rf[q]->basis, rest.st_, rf[q]->coef, samples_[i].speed_rpm, samples_[i].mass_flow), d);
-      sum += (guess - truth) * (guess - truth);
-      e.max_abs = std::max(e.max_abs, std::abs(guess - truth));
-      lo = std::min(lo, truth), hi = std::max(hi, truth);
+      sum[q] += (guess - truth) * (guess - truth);
+      out[q].max_abs = std::max(out[q].max_abs, std::abs(guess - truth));
+      lo[q] = std::min(lo[q], truth), hi[q] = std::max(hi[q], truth);
     }
-    e.rms = std::sqrt(sum / static_cast<double>(n));
-    e.range = hi - lo;
-    out.push_back(e);
+  }
+  for (int q = 0; q < 4; ++q) {
+    out[q].rms = std::sqrt(sum[q] / static_cast<double>(n));
+    out[q].range = hi[q] - lo[q];
   }
   return out;
 }

@@ -77,6 +77,14 @@ inline void remove_losses(FilmModel& m) {
   m.wall.adiabatic = true;
 }
 
+// The transient tests' grid: 60 sections x 16 cells across the film.
+inline FilmGridSpec small_grid() {
+  FilmGridSpec spec;
+  spec.nz = 60;
+  spec.nxi = 16;
+  return spec;
+}
+
 inline double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

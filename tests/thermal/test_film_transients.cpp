@@ -16,13 +16,6 @@ using namespace centrec::thermal;
 using namespace centrec::thermal::testcases;
 
 namespace {
-FilmGridSpec small_grid() {
-  FilmGridSpec spec;
-  spec.nz = 60;
-  spec.nxi = 16;
-  return spec;
-}
-
 double steady_T_out(const AnalyticFilm& a, const FilmModel& m) {
   FilmOperator op(analytic_film(a), m, small_grid());
   op.freeze_inputs(true);

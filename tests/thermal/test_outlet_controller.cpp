@@ -23,13 +23,6 @@ using namespace centrec::thermal;
 using namespace centrec::thermal::testcases;
 
 namespace {
-FilmGridSpec small_grid() {
-  FilmGridSpec spec;
-  spec.nz = 60;
-  spec.nxi = 16;
-  return spec;
-}
-
 // The steady state of op's inputs at t = 0; op is left unfrozen for a transient.
 std::vector<double> steady(FilmOperator& op) {
   op.freeze_inputs(true);
