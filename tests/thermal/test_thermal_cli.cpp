@@ -283,7 +283,9 @@ TEST(ThermalCli, CavitySurfacesHaveTheirAxialPositions) {
   for (std::size_t k = 0; k < rings; ++k) {
     EXPECT_GT(z[k], 0.0);
     EXPECT_LT(z[k], L);
-    if (k > 0) EXPECT_GT(z[k], z[k - 1]);
+    if (k > 0) {
+      EXPECT_GT(z[k], z[k - 1]);
+    }
   }
   EXPECT_NEAR(z[0] + z[rings - 1], L, 1e-9 * L);  // equal rings: symmetric centres
   EXPECT_EQ(z[rings], 0.0);
