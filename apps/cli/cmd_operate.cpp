@@ -171,7 +171,10 @@ int cmd_operate(const Args& args) {
   // 3. The operating point.
   const runs::OperatingAnswer a = runs::find_operating_point(map, thermal, target, n_speeds, min_thickness_d);
   std::printf("target T_out %.2f K (%.2f C): %s\n", target, target - 273.15, a.criterion.c_str());
-  std::printf("  %9s %11s %9s %10s %9s %7s\n", "speed rpm", "mdot kg/s", "T_out K", "efficiency", "film d", "solves");
+  j["candidates"] = nlohmann::json::array();
+  if (!a.candidates.empty())
+    std::printf("  %9s %11s %9s %10s %9s %7s\n", "speed rpm", "mdot kg/s", "T_out K", "efficiency", "film d",
+                "solves");
   for (std::size_t k = 0; k < a.candidates.size(); ++k) {
     const auto& c = a.candidates[k];
     nlohmann::json row = {{"speed_rpm", c.speed_rpm}, {"found", c.found}, {"solves", c.solves}};
@@ -190,8 +193,11 @@ int cmd_operate(const Args& args) {
   j["criterion"] = a.criterion;
   int status = 0;
   if (a.best < 0) {
-    std::printf("no speed of the window reaches %.2f K: see the spans above\n", target);
+    const std::string why = a.why_none.empty() ? "no speed of the window reaches the target: see the spans above"
+                                               : a.why_none + ": run the unusable points again (their reasons above)";
+    std::printf("no operating point for %.2f K: %s\n", target, why.c_str());
     j["operating_point"] = nullptr;
+    j["why_no_operating_point"] = why;
     status = 3;
   } else {
     const auto& b = a.candidates[a.best];

@@ -110,7 +110,11 @@ OperatingAnswer find_operating_point(const OperatingMap& m, const SurrogateTherm
     v_hi = m.speeds[i + 1];
     any = true;
   }
-  if (!any) throw std::runtime_error(m.dir + ": the map has no stable cell (no 2 x 2 block of usable points)");
+  if (!any) {
+    // Not an error of the inputs but the map's answer: the caller reports it as such.
+    out.why_none = "the map has no stable cell (no 2 x 2 block of usable points)";
+    return out;
+  }
   for (int k = 0; k < n_speeds; ++k) {
     OperatingCandidate c;
     c.speed_rpm = n_speeds == 1 ? 0.5 * (v_lo + v_hi) : v_lo + (v_hi - v_lo) * k / (n_speeds - 1);

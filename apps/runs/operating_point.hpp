@@ -52,6 +52,7 @@ struct OperatingAnswer {
   std::string criterion;
   std::vector<OperatingCandidate> candidates;  // one per speed tried, ascending
   int best = -1;                               // index into candidates, -1: none reaches the target
+  std::string why_none;                        // set when the map has no window to search at all
 };
 
 // Tries n_speeds speeds evenly over the window's speeds; at each, the mass flow in the

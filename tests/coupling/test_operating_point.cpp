@@ -3,6 +3,7 @@
 // flow: a law the surrogate's basis holds is reproduced to round-off, a known operating
 // point is found again, and the window and its margins are those of the map's grid.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include "tests/test_case_dir.hpp"
 
@@ -67,8 +68,10 @@ std::vector<SurrogateSample> grid_samples(bool curved) {
 }
 
 // A sweep folder as `centrec sweep` writes it: sweep.json and one folder per point with its
-// film.h5; the point (60 rpm, 4.5 kg/s) failed with a refusal in its run.log.
-std::string synthetic_map(const Geometry& g = {}, const std::string& name_of_map = "operating_map") {
+// film.h5; the point (60 rpm, 4.5 kg/s) failed with a refusal in its run.log, and with
+// `centre_failed` the centre point too (then no 2 x 2 block of points is usable).
+std::string synthetic_map(const Geometry& g = {}, const std::string& name_of_map = "operating_map",
+                          bool centre_failed = false) {
   const std::string dir = centrec::testing::fresh_dir(name_of_map);
   nlohmann::json points = nlohmann::json::array();
   for (double rpm : {0.8 * g.rpm0, g.rpm0, 1.2 * g.rpm0})
@@ -76,7 +79,7 @@ std::string synthetic_map(const Geometry& g = {}, const std::string& name_of_map
       const std::string name = "p" + std::to_string(rpm) + "_" + std::to_string(m);
       std::filesystem::create_directories(dir + "/" + name);
       nlohmann::json row = {{"dir", "elsewhere/" + name}, {"speed_rpm", rpm}, {"mass_flow_kg_s", m}};
-      if (rpm == 1.2 * g.rpm0 && m == 1.5 * g.mdot0) {
+      if ((rpm == 1.2 * g.rpm0 && m == 1.5 * g.mdot0) || (centre_failed && rpm == g.rpm0 && m == g.mdot0)) {
         row["status"] = 1;
         std::ofstream(dir + "/" + name + "/run.log")
             << "DEM progress\ncentrec run: case.yaml: the DEM film is not at steady flow: holdup +40 %\n";
@@ -264,4 +267,27 @@ TEST(OperateCli, AnswersFromASyntheticMapOfTheQuickstartReceiver) {
                                       .c_str());
   EXPECT_NE(refused, 0);
   EXPECT_NE(read_text(out + ".refused").find("only thermal.* keys"), std::string::npos) << read_text(out + ".refused");
+}
+
+TEST(OperateCli, AMapWithoutAStableCellStillWritesItsAnswer) {
+  // A map whose centre point failed has no 2 x 2 block of usable points: operate lists the
+  // points and their reasons, writes operate.json with a null operating point and the reason
+  // (a script reads the outcome from the file), and exits with status 3.
+  const Geometry g{0.12, 0.171, 160.0, 0.0357, 0.016, 6e-3};
+  const std::string map = synthetic_map(g, "operate_cli_no_cell", true);
+  const std::string out = centrec::testing::fresh_dir("operate_cli_no_cell_out") + "/out";
+  const std::string cmd = std::string(CENTREC_BINARY) + " operate " + std::string(CENTREC_SOURCE_DIR) +
+                          "/cases/quickstart.yaml --map " + map + " --target-outlet 1100 --out " + out +
+                          " --no-plots --set thermal.grid.nz=40 --set thermal.grid.nxi=12";
+  const int status = std::system((cmd + " > " + out + ".log 2>&1").c_str());
+  const std::string log = read_text(out + ".log");
+  std::printf("%s\n", log.c_str());
+  ASSERT_TRUE(WIFEXITED(status)) << log;
+  EXPECT_EQ(WEXITSTATUS(status), 3) << log;
+  ASSERT_TRUE(std::filesystem::exists(out + "/operate.json")) << log;
+  const auto j = nlohmann::json::parse(read_text(out + "/operate.json"));
+  EXPECT_TRUE(j["operating_point"].is_null());
+  EXPECT_NE(j["why_no_operating_point"].get<std::string>().find("no stable cell"), std::string::npos);
+  EXPECT_EQ(j["map_points"].size(), 9u);
+  EXPECT_EQ(j.at("candidates").size(), 0u);
 }
