@@ -106,11 +106,15 @@ OperatingMap read_operating_map(const std::string& sweep_dir) {
     const std::string c = a.value("column", "");
     if (c == "speed_rpm") speed = true;
     else if (c == "mass_flow_kg_s") flow = true;
-    else if (c.rfind("dem.initial_film.", 0) == 0) continue;  // each point's start, near its own state
+    // Each point's start, near its own state, and how long its spin-up may take to settle:
+    // neither is in a steady film (a point that did not settle is not usable anyway).
+    else if (c.rfind("dem.initial_film.", 0) == 0 || c == "dem.run.duration" || c == "dem.run.max_extension")
+      continue;
     else
       throw std::runtime_error(path + ": the sweep also varies " + c +
                                "; an operating map varies only speed_rpm and mass_flow_kg_s (the film depends on "
-                               "nothing else) and each point's start (dem.initial_film.*)");
+                               "nothing else), each point's start (dem.initial_film.*) and its spin-up "
+                               "(dem.run.duration, dem.run.max_extension)");
   }
   if (!speed || !flow)
     throw std::runtime_error(path + ": an operating map is a sweep over speed_rpm and mass_flow_kg_s (`centrec "

@@ -71,7 +71,7 @@ std::vector<SurrogateSample> grid_samples(bool curved) {
 // film.h5; the point (60 rpm, 4.5 kg/s) failed with a refusal in its run.log, and with
 // `centre_failed` the centre point too (then no 2 x 2 block of points is usable).
 std::string synthetic_map(const Geometry& g = {}, const std::string& name_of_map = "operating_map",
-                          bool centre_failed = false) {
+                          bool centre_failed = false, const std::string& extra_axis = "") {
   const std::string dir = centrec::testing::fresh_dir(name_of_map);
   nlohmann::json points = nlohmann::json::array();
   for (double rpm : {0.8 * g.rpm0, g.rpm0, 1.2 * g.rpm0})
@@ -93,6 +93,7 @@ std::string synthetic_map(const Geometry& g = {}, const std::string& name_of_map
     }
   nlohmann::json axes = {{{"key", "speed_rpm"}, {"column", "speed_rpm"}},
                          {{"key", "mass_flow"}, {"column", "mass_flow_kg_s"}}};
+  if (!extra_axis.empty()) axes.push_back({{"key", extra_axis}, {"column", extra_axis}});
   std::ofstream(dir + "/sweep.json") << nlohmann::json{{"case", "case.yaml"}, {"axes", axes}, {"points", points}};
   return dir;
 }
@@ -191,6 +192,23 @@ TEST(OperatingMap, ReadsTheWindowAndTheReasonsOfAFailedPoint) {
   const auto span = m.flow_span(55.0);
   EXPECT_DOUBLE_EQ(span.first, 2.0);
   EXPECT_DOUBLE_EQ(span.second, 3.0);
+}
+
+TEST(OperatingMap, TakesEachPointsStartAndSpinUpButNoOtherKey) {
+  // A point's start and the length of its spin-up change how it settles, not a settled film:
+  // a map may vary them. A key that changes the film (the DEM's step) or the thermal model
+  // makes the sweep something other than an operating map.
+  for (const char* key : {"dem.initial_film.particles", "dem.run.duration", "dem.run.max_extension"})
+    EXPECT_EQ(centrec::runs::read_operating_map(synthetic_map({}, "operating_map_axis", false, key)).points.size(), 9u)
+        << key;
+  for (const char* key : {"dem.run.dt", "thermal.T_in"}) {
+    try {
+      centrec::runs::read_operating_map(synthetic_map({}, "operating_map_axis", false, key));
+      ADD_FAILURE() << "a map varying " << key << " was read";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("also varies ") + key), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(OperatingPoint, FindsAKnownPointOfASyntheticSurrogate) {
