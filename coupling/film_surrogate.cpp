@@ -96,8 +96,25 @@ std::vector<double> surrogate_depths() {
   return s;
 }
 
+// The solid fraction is fitted as logit(phi / kPhiCap): any fitted value maps back into
+// (0, kPhiCap), so a film evaluated off the map's points (as the leave-one-out check does at a
+// corner) stays a film. kPhiCap is the densest packing of equal spheres, pi / sqrt(18).
+namespace {
+constexpr double kPhiCap = 0.74048;
+double phi_to_fit(double phi) {
+  const double p = std::clamp(phi / kPhiCap, 1e-9, 1.0 - 1e-9);
+  return std::log(p / (1.0 - p));
+}
+double phi_from_fit(double v) { return kPhiCap / (1.0 + std::exp(-v)); }
+std::vector<double> phis_from_fit(const std::vector<double>& v) {
+  std::vector<double> out(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k) out[k] = phi_from_fit(v[k]);
+  return out;
+}
+}  // namespace
+
 // The quantities whose leave-one-out error picks their basis and is reported: each maps a
-// point's numbers (thickness, profiles) to one figure.
+// point's numbers (thickness, profiles; the solid fraction as fitted) to one figure.
 namespace {
 struct Quantity {
   const char* name;
@@ -107,7 +124,8 @@ struct Quantity {
 const Quantity kQuantities[4] = {
     {"film thickness", "d", [](const std::vector<double>& v, double d) { return std::exp(v[0]) / d; }},
     {"surface velocity u(s = 1)", "m/s", [](const std::vector<double>& v, double) { return v.back(); }},
-    {"depth-mean solid fraction", "-", [](const std::vector<double>& v, double) { return depth_mean(v); }},
+    {"depth-mean solid fraction", "-",
+     [](const std::vector<double>& v, double) { return depth_mean(phis_from_fit(v)); }},
     {"depth-mean dispersion D", "m2/s", [](const std::vector<double>& v, double) { return depth_mean(v); }},
 };
 }  // namespace
@@ -127,7 +145,6 @@ void FilmSurrogate::fit_all(const SurrogateBasis* forced) {
   const auto& f0 = samples_[0].film;
   const auto s = surrogate_depths();
   profiles_.clear();
-  phi_max_ = 0.0;
   for (const auto& p : samples_) {
     const auto& f = p.film;
     f.check();
@@ -153,9 +170,8 @@ void FilmSurrogate::fit_all(const SurrogateBasis* forced) {
     pr.log_t = std::log(t);
     for (double sk : s) {
       pr.u.push_back(f.sample(f.u, f.z[0], sk * t));
-      pr.phi.push_back(f.sample(f.phi, f.z[0], sk * t));
+      pr.phi.push_back(phi_to_fit(f.sample(f.phi, f.z[0], sk * t)));
       pr.D.push_back(f.sample(f.D, f.z[0], sk * t));
-      phi_max_ = std::max(phi_max_, pr.phi.back());
     }
     profiles_.push_back(std::move(pr));
   }
@@ -239,7 +255,7 @@ thermal::FilmField FilmSurrogate::film_at(double speed_rpm, double mass_flow) co
   for (std::size_t i = 0; i < f.nz(); ++i)
     for (int k = 0; k < kSurrogateDepths; ++k) {
       f.u.push_back(std::max(0.0, u[k]));
-      f.phi.push_back(std::clamp(phi[k], 0.0, phi_max_));
+      f.phi.push_back(phi_from_fit(phi[k]));
       f.D.push_back(std::max(0.0, D[k]));
     }
   return f;

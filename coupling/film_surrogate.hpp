@@ -6,8 +6,10 @@
 //
 // Each map point's film (a slice's, uniform along z: its first section) is described by its
 // thickness t and by u, phi and D at kSurrogateDepths depths s = eta / t in [0, 1]. Each of
-// these numbers is fitted by least squares in x = ln(speed), y = ln(mass flow): ln t, and
-// u, phi and D themselves (they reach 0 at the wall or the top, where a logarithm fails).
+// these numbers is fitted by least squares in x = ln(speed), y = ln(mass flow): ln t,
+// logit(phi / 0.74048) (so that any fitted value is a solid fraction below the densest
+// packing, also off the map's points), and u and D themselves (they reach 0 at the wall or
+// the top, where a logarithm fails).
 // Two bases, the plane {1, x, y} and the quadric {1, x, y, x^2, xy, y^2}; the quadric only
 // with at least 8 points, and each quantity (thickness, u, phi, D profile) takes the basis
 // with the smaller leave-one-out error (model no more than the map supports).
@@ -48,7 +50,7 @@ class FilmSurrogate {
   explicit FilmSurrogate(std::vector<SurrogateSample> samples);
 
   // The film at (speed, mass flow): geometry and z sections of the map's first film,
-  // thickness and profiles from the fits (u, D >= 0, 0 <= phi <= its maximum on the map),
+  // thickness and profiles from the fits (u, D >= 0, 0 < phi < 0.74048),
   // mdot and omega set, drum_diameter the map films' (its flow is not imposed: see
   // coupling/film_mass_flow.hpp).
   thermal::FilmField film_at(double speed_rpm, double mass_flow) const;
@@ -69,7 +71,7 @@ class FilmSurrogate {
   };
   struct Profiles {  // one map point's numbers
     double log_t = 0.0;
-    std::vector<double> u, phi, D;  // kSurrogateDepths each
+    std::vector<double> u, phi, D;  // kSurrogateDepths each; phi as fitted (logit, film_surrogate.cpp)
   };
   FilmSurrogate(std::vector<SurrogateSample> samples, SurrogateBasis t, SurrogateBasis u, SurrogateBasis phi,
                 SurrogateBasis D);
@@ -78,7 +80,6 @@ class FilmSurrogate {
   std::vector<SurrogateSample> samples_;
   std::vector<Profiles> profiles_;
   Standardise st_;
-  double phi_max_ = 0.0;
   Fit t_, u_, phi_, D_;
 };
 

@@ -144,6 +144,32 @@ TEST(FilmSurrogate, TakesTheQuadricOnlyWhereTheMapIsCurved) {
   (void)plane;
 }
 
+TEST(FilmSurrogate, KeepsTheSolidFractionPhysicalWhereItExtrapolates) {
+  // A solid fraction that falls steeply with speed over the map: a plane through it reaches
+  // 0 at 20 rpm and exceeds random close packing at 200 rpm. The surrogate's film must stay
+  // a film (0 < phi < 1 inside it, checked by FilmField::check) wherever it is evaluated,
+  // as the leave-one-out check evaluates a corner point from the others.
+  std::vector<SurrogateSample> s;
+  for (double rpm : {40.0, 50.0, 60.0})
+    for (double m : {2.0, 3.0, 4.5}) {
+      FilmField f = synthetic_film(rpm, m);
+      for (double& phi : f.phi) phi = 0.45 + 0.5 * std::log(rpm / 50.0);
+      s.push_back({rpm, m, f});
+    }
+  const FilmSurrogate sur(s);
+  for (double rpm : {20.0, 45.0, 200.0}) {
+    const FilmField f = sur.film_at(rpm, 3.0);
+    EXPECT_NO_THROW(f.check()) << rpm << " rpm";
+    const auto [lo, hi] = std::minmax_element(f.phi.begin(), f.phi.end());
+    std::printf("%.0f rpm: phi %.4f - %.4f\n", rpm, *lo, *hi);
+    EXPECT_GT(*lo, 0.0);
+    EXPECT_LT(*hi, 0.7405);
+  }
+  // Inside the map the fit still follows the law closely.
+  EXPECT_NEAR(sur.film_at(45.0, 3.0).phi[0], 0.45 + 0.5 * std::log(0.9), 0.01);
+  EXPECT_EQ(sur.leave_one_out().size(), 4u);
+}
+
 TEST(FilmSurrogate, RefusesPointsOnOneLine) {
   std::vector<SurrogateSample> s;
   for (double m : {2.0, 3.0, 4.5, 5.0}) s.push_back({50.0, m, synthetic_film(50.0, m)});
