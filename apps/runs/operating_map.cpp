@@ -35,6 +35,15 @@ bool cell_of(const std::vector<double>& grid, double x, std::size_t& i) {
   return true;
 }
 
+// The cells holding x: on an interior node of the grid both neighbours (the window is closed:
+// a node on its edge is inside it), else the one cell (none outside the grid).
+std::vector<std::size_t> cells_of(const std::vector<double>& grid, double x) {
+  std::size_t i = 0;
+  if (!cell_of(grid, x, i)) return {};
+  if (i > 0 && grid[i] == x) return {i - 1, i};
+  return {i};
+}
+
 }  // namespace
 
 const MapPoint* OperatingMap::at(std::size_t i, std::size_t j) const {
@@ -56,15 +65,28 @@ bool cell_usable(const OperatingMap& m, std::size_t i, std::size_t j) {
 }
 }  // namespace
 
+namespace {
+// A usable cell holding (speed, mass flow), if any.
+bool usable_cell_at(const OperatingMap& m, double speed_rpm, double mass_flow, std::size_t& i, std::size_t& j) {
+  for (std::size_t a : cells_of(m.speeds, speed_rpm))
+    for (std::size_t b : cells_of(m.flows, mass_flow))
+      if (cell_usable(m, a, b)) {
+        i = a, j = b;
+        return true;
+      }
+  return false;
+}
+}  // namespace
+
 bool OperatingMap::inside(double speed_rpm, double mass_flow) const {
   std::size_t i = 0, j = 0;
-  return cell_of(speeds, speed_rpm, i) && cell_of(flows, mass_flow, j) && cell_usable(*this, i, j);
+  return usable_cell_at(*this, speed_rpm, mass_flow, i, j);
 }
 
 WindowMargin OperatingMap::margin(double speed_rpm, double mass_flow) const {
   WindowMargin w;
   std::size_t i = 0, j = 0;
-  if (!cell_of(speeds, speed_rpm, i) || !cell_of(flows, mass_flow, j) || !cell_usable(*this, i, j)) return w;
+  if (!usable_cell_at(*this, speed_rpm, mass_flow, i, j)) return w;
   std::size_t lo = i, hi = i;
   while (lo > 0 && cell_usable(*this, lo - 1, j)) --lo;
   while (cell_usable(*this, hi + 1, j)) ++hi;
@@ -79,19 +101,18 @@ WindowMargin OperatingMap::margin(double speed_rpm, double mass_flow) const {
 }
 
 std::pair<double, double> OperatingMap::flow_span(double speed_rpm) const {
-  std::size_t i = 0;
-  if (!cell_of(speeds, speed_rpm, i)) return {0.0, 0.0};
   std::pair<double, double> best{0.0, 0.0};
-  for (std::size_t j = 0; j + 1 < flows.size();) {
-    if (!cell_usable(*this, i, j)) {
-      ++j;
-      continue;
+  for (std::size_t i : cells_of(speeds, speed_rpm))
+    for (std::size_t j = 0; j + 1 < flows.size();) {
+      if (!cell_usable(*this, i, j)) {
+        ++j;
+        continue;
+      }
+      std::size_t k = j;
+      while (cell_usable(*this, i, k + 1)) ++k;
+      if (flows[k + 1] - flows[j] > best.second - best.first) best = {flows[j], flows[k + 1]};
+      j = k + 1;
     }
-    std::size_t k = j;
-    while (cell_usable(*this, i, k + 1)) ++k;
-    if (flows[k + 1] - flows[j] > best.second - best.first) best = {flows[j], flows[k + 1]};
-    j = k + 1;
-  }
   return best;
 }
 

@@ -218,6 +218,13 @@ TEST(OperatingMap, ReadsTheWindowAndTheReasonsOfAFailedPoint) {
   const auto span = m.flow_span(55.0);
   EXPECT_DOUBLE_EQ(span.first, 2.0);
   EXPECT_DOUBLE_EQ(span.second, 3.0);
+  // On a grid speed the window is closed: at 50 rpm the cells on both sides count, so the
+  // whole 2-4.5 kg/s span of the 40-50 rpm cells is inside, as the points there are usable.
+  const auto node = m.flow_span(50.0);
+  EXPECT_DOUBLE_EQ(node.first, 2.0);
+  EXPECT_DOUBLE_EQ(node.second, 4.5);
+  EXPECT_TRUE(m.inside(50.0, 4.0));
+  EXPECT_DOUBLE_EQ(m.margin(50.0, 4.0).speed_above, 0.0);
 }
 
 TEST(OperatingMap, TakesEachPointsStartAndSpinUpButNoOtherKey) {
