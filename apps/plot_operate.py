@@ -17,6 +17,8 @@ import json
 import os
 import sys
 
+import numpy as np
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plot_common as pc  # noqa: E402
 from plot_common import plt  # noqa: E402
@@ -36,8 +38,8 @@ def main(argv=None):
     flows = sorted({r["mass_flow_kg_s"] for r in rows})
     cell = {(r["speed_rpm"], r["mass_flow_kg_s"]): r for r in rows}
 
-    def field(name):
-        return [[cell[(v, m)][name] for v in speeds] for m in flows]
+    def field(name):  # nan where the surrogate had no film (off the window): left blank
+        return np.ma.masked_invalid([[cell[(v, m)][name] for v in speeds] for m in flows])
 
     target = op["target_T_out_K"]
     fig, axes = plt.subplots(1, 2, figsize=(12, 5))

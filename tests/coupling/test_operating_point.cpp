@@ -36,11 +36,12 @@ constexpr double kD = 1.2e-3;
 // the centre of the map), 0.12 the quickstart's receiver (160 rpm, 0.0357 kg/s).
 struct Geometry {
   double diameter = 1.0, length = 1.0, rpm0 = 50.0, mdot0 = 3.0, u0 = 0.26, t0 = 6e-3;
+  double u_speed = 0.08, u_flow = 0.2;  // the surface velocity's plane in ln rpm, ln mdot
 };
 FilmField synthetic_film(double rpm, double mdot, bool curved = false, const Geometry& g = {}) {
   const double x = std::log(rpm / g.rpm0), y = std::log(mdot / g.mdot0);
   const double t = g.t0 * std::exp(0.5 * y - 0.3 * x + (curved ? 0.8 * y * y : 0.0));
-  const double U = g.u0 * (1.0 + 0.2 * y + 0.08 * x), D = 1e-6 * (1.0 + 0.1 * x);
+  const double U = g.u0 * (1.0 + g.u_flow * y + g.u_speed * x), D = 1e-6 * (1.0 + 0.1 * x);
   FilmField f;
   f.z = {0.0, 0.5 * g.length, g.length};
   const auto s = centrec::coupling::surrogate_depths();
@@ -341,4 +342,29 @@ TEST(OperateCli, AMapWithoutAStableCellStillWritesItsAnswer) {
   EXPECT_NE(j["why_no_operating_point"].get<std::string>().find("no stable cell"), std::string::npos);
   EXPECT_EQ(j["map_points"].size(), 9u);
   EXPECT_EQ(j.at("candidates").size(), 0u);
+}
+
+TEST(OperateCli, DrawsTheMapWhereTheSurrogateHasNoFilmOffTheWindow) {
+  // A surface velocity that falls steeply with speed and flow: the plane through the usable
+  // points reaches u < 0 at the failed corner (1.2 x 50 rpm, 1.5 x 3 kg/s), where the
+  // surrogate's film carries nothing. The map figure's grid holds nan there and operate
+  // still answers (it stopped with "carries no mass flux" before).
+  Geometry g{0.12, 0.171, 160.0, 0.0357, 0.016, 6e-3};
+  g.u_speed = -5.0;
+  g.u_flow = -2.0;
+  const std::string map = synthetic_map(g, "operate_cli_no_film_map");
+  const std::string out = centrec::testing::fresh_dir("operate_cli_no_film") + "/out";
+  const std::string cmd = std::string(CENTREC_BINARY) + " operate " + std::string(CENTREC_SOURCE_DIR) +
+                          "/cases/quickstart.yaml --map " + map + " --target-outlet 1100 --speeds 3 --out " + out +
+                          " --no-plots --set thermal.grid.nz=40 --set thermal.grid.nxi=12";
+  const int status = std::system((cmd + " > " + out + ".log 2>&1").c_str());
+  const std::string log = read_text(out + ".log");
+  std::printf("%s\n", log.c_str());
+  ASSERT_TRUE(WIFEXITED(status)) << log;
+  EXPECT_TRUE(WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 3) << log;
+  const std::string grid = read_text(out + "/operate_map.csv");
+  EXPECT_EQ(std::count(grid.begin(), grid.end(), '\n'), 82);
+  EXPECT_NE(grid.find("nan,nan"), std::string::npos);
+  const auto j = nlohmann::json::parse(read_text(out + "/operate.json"));
+  EXPECT_GT(j["map_grid_points_without_film"].get<int>(), 0);
 }
