@@ -18,10 +18,26 @@ import os
 import sys
 
 import numpy as np
+from matplotlib.patches import Rectangle
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plot_common as pc  # noqa: E402
 from plot_common import plt  # noqa: E402
+
+
+def hatch_outside_window(ax, points):
+    """Hatches every cell of the map's grid that is not inside the window (a cell is inside
+    when its four corner points are usable: apps/runs/operating_map.hpp), drawn from the map's
+    own points so that a window narrower than the figure's grid is shown as it is."""
+    usable = {(q["speed_rpm"], q["mass_flow_kg_s"]): q["usable"] for q in points}
+    vs = sorted({q["speed_rpm"] for q in points})
+    ms = sorted({q["mass_flow_kg_s"] for q in points})
+    for i in range(len(vs) - 1):
+        for j in range(len(ms) - 1):
+            corners = [(vs[a], ms[b]) for a in (i, i + 1) for b in (j, j + 1)]
+            if not all(usable.get(c, False) for c in corners):
+                ax.add_patch(Rectangle((vs[i], ms[j]), vs[i + 1] - vs[i], ms[j + 1] - ms[j], fill=False,
+                                       hatch="//", lw=0, zorder=3))
 
 
 def main(argv=None):
@@ -49,7 +65,7 @@ def main(argv=None):
         fig.colorbar(cs, ax=ax, label=title)
         tc = ax.contour(speeds, flows, field("T_out_K"), levels=[target], colors="w", linewidths=2)
         ax.clabel(tc, fmt={target: "target %.0f K" % target}, fontsize=8)
-        ax.contourf(speeds, flows, field("inside_window"), levels=[-0.5, 0.5], colors="none", hatches=["//"])
+        hatch_outside_window(ax, op["map_points"])
         good = [q for q in op["map_points"] if q["usable"]]
         bad = [q for q in op["map_points"] if not q["usable"]]
         ax.plot([q["speed_rpm"] for q in good], [q["mass_flow_kg_s"] for q in good], "o", color="c",
