@@ -25,6 +25,8 @@ std::vector<dem::scene::MassFlowSample> read_liggghts_mass_flow(const std::strin
     double n = 0.0;
     if (!(l >> s.time >> s.fed >> s.out >> s.holdup >> n)) break;  // a line being written
     s.particles = static_cast<std::int64_t>(std::llround(n));
+    double axial = 0.0;
+    if (l >> axial) s.axial_flow = axial;  // a slice's sum(m v_z) / L (decks before it have 5 columns)
     // Mass balance: whatever is neither held up nor out left through the box (lost).
     s.lost = std::max(0.0, initial_holdup + s.fed - s.out - s.holdup);
     if (s.lost < 1e-9 * (initial_holdup + s.fed)) s.lost = 0.0;  // round-off of the sums

@@ -310,16 +310,22 @@ std::string deck(const config::CaseFile& cf, const config::DemCase& dc, const Li
   }
 
   s << "\n# --- Mass-flow record every feeder interval: time, fed, out (kg, cumulative), holdup (kg), free\n"
-       "# particles. Atoms lost through the box (none expected) show as holdup missing from the balance.\n"
+       "# particles, a slice's axial flow sum(m v_z) / L (kg/s; 0 for a drum). Atoms lost through the box\n"
+       "# (none expected) show as holdup missing from the balance.\n"
        "variable t equal step*dt\n"
     << (fed ? "variable fed equal " + fed_mass_expression(c) + "\nvariable out equal f_outlet[1]\n"
             : std::string("variable fed equal 0\nvariable out equal 0\n"))
     << "variable holdup equal mass(film)\n"
        "variable nfilm equal count(film)\n"
-    << fmt("fix flowlog all print %lld \"${t} ${fed} ${out} ${holdup} ${nfilm}\" file %s screen no\n",
+    << (slice ? "variable mvz atom mass*vz\ncompute mvz film reduce sum v_mvz\n" +
+                    fmt("variable axial equal c_mvz/%.17g\n", c.slice.length)
+              : std::string("variable axial equal 0\n"))
+    << fmt("fix flowlog all print %lld \"${t} ${fed} ${out} ${holdup} ${nfilm} ${axial}\" file %s screen no\n",
            static_cast<long long>(plan.flow_every), plan.flow_file.c_str())
-    << fmt("thermo_style custom step atoms ke\nthermo %lld\nthermo_modify lost warn norm no\n",
-           static_cast<long long>(std::max<std::int64_t>(plan.flow_every, plan.dump_every)));
+    // The slice's compute in the thermo output keeps it current at the end of each run, where
+    // the final print reads it.
+    << fmt("thermo_style custom step atoms ke%s\nthermo %lld\nthermo_modify lost warn norm no\n",
+           slice ? " c_mvz" : "", static_cast<long long>(std::max<std::int64_t>(plan.flow_every, plan.dump_every)));
 
   s << fmt("\n# --- Spin-up: run.duration (%.9g s) rounded up to whole snapshot intervals.\n", dc.run.duration)
     << "print \"CENTREC_PHASE spinup\"\n"
@@ -332,7 +338,7 @@ std::string deck(const config::CaseFile& cf, const config::DemCase& dc, const Li
     << "dump_modify film pad 12 sort id\n"
     << fmt("run %lld\n", static_cast<long long>(plan.sampling_steps))
     << "# The state at the last step (the record above is written every feeder interval only).\n"
-       "print \"CENTREC_FINAL ${t} ${fed} ${out} ${holdup} ${nfilm}\"\n"
+       "print \"CENTREC_FINAL ${t} ${fed} ${out} ${holdup} ${nfilm} ${axial}\"\n"
        "print \"CENTREC_PHASE done\"\n";
   return s.str();
 }

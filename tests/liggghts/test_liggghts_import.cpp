@@ -97,5 +97,12 @@ TEST(LiggghtsImport, MassFlowRecordAndItsBalance) {
   EXPECT_DOUBLE_EQ(log[1].lost, 0.0);  // 0.01 + 0.0002 - 0.0001 - 0.0101 = 0
   // 0.01 + 0.0004 - 0.0002 - 0.0100 = 0.0002 kg unaccounted for: lost through the box.
   EXPECT_NEAR(log[2].lost, 0.0002, 1e-12);
+  EXPECT_DOUBLE_EQ(log[2].axial_flow, 0.0);  // a 5-column record (a drum's deck before the slice column)
+  // A slice's record carries its axial flow sum(m v_z) / L in a sixth column.
+  write(d / "slice_flow.txt", "0.001 0 0 0.01 100 0.0321\n0.002 0 0 0.01 100 0.0298\n");
+  const auto slice = read_liggghts_mass_flow((d / "slice_flow.txt").string(), 0.01);
+  ASSERT_EQ(slice.size(), 2u);
+  EXPECT_DOUBLE_EQ(slice[0].axial_flow, 0.0321);
+  EXPECT_DOUBLE_EQ(slice[1].axial_flow, 0.0298);
   fs::remove_all(d);
 }
