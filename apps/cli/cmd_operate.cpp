@@ -227,12 +227,13 @@ int cmd_operate(const Args& args) {
       for (int k = 0; k < kGrid; ++k) {
         const double v = map.speeds.front() + (map.speeds.back() - map.speeds.front()) * i / (kGrid - 1);
         const double m = map.flows.front() * std::pow(map.flows.back() / map.flows.front(), k / (kGrid - 1.0));
-        csv << shortest_text(v) << ',' << shortest_text(m) << ',' << (map.inside(v, m) ? 1 : 0) << ',';
+        const bool inside = map.inside(v, m);
+        csv << shortest_text(v) << ',' << shortest_text(m) << ',' << (inside ? 1 : 0) << ',';
         try {
           const auto r = thermal.at(v, m);
           csv << shortest_text(r.T_out) << ',' << shortest_text(r.efficiency) << '\n';
         } catch (const std::exception& e) {
-          if (map.inside(v, m)) throw;  // inside the window the surrogate must hold
+          if (inside) throw;  // inside the window the surrogate must hold
           csv << "nan,nan\n";
           if (failed++ == 0) why = e.what();
         }

@@ -278,6 +278,22 @@ std::string read_text(const std::string& path) {
   std::ifstream in(path);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
+
+// `centrec operate` of the quickstart case on `map` into `out`, its thermal model on a small
+// grid, with `extra` arguments; its output printed and returned with the system() status.
+struct OperateRun {
+  int status;
+  std::string log;
+};
+OperateRun run_operate(const std::string& map, const std::string& out, const std::string& extra) {
+  const std::string cmd = std::string(CENTREC_BINARY) + " operate " + std::string(CENTREC_SOURCE_DIR) +
+                          "/cases/quickstart.yaml --map " + map + " --target-outlet 1100 --out " + out +
+                          " --no-plots --set thermal.grid.nz=40 --set thermal.grid.nxi=12 " + extra;
+  const int status = std::system((cmd + " > " + out + ".log 2>&1").c_str());
+  const std::string log = read_text(out + ".log");
+  std::printf("%s\n", log.c_str());
+  return {status, log};
+}
 }  // namespace
 
 TEST(OperateCli, AnswersFromASyntheticMapOfTheQuickstartReceiver) {
@@ -287,13 +303,8 @@ TEST(OperateCli, AnswersFromASyntheticMapOfTheQuickstartReceiver) {
   const std::string map = synthetic_map(g, "operate_cli_map");
   const std::string out = centrec::testing::fresh_dir("operate_cli") + "/out";
   const std::string quickstart = std::string(CENTREC_SOURCE_DIR) + "/cases/quickstart.yaml";
-  const std::string cmd = std::string(CENTREC_BINARY) + " operate " + quickstart + " --map " + map +
-                          " --target-outlet 1100 --speeds 3 --out " + out +
-                          " --no-plots --set thermal.grid.nz=40 --set thermal.grid.nxi=12 --transient " +
-                          std::string(CENTREC_SOURCE_DIR) + "/cases/cloud_70pct_60s.csv";
-  const int status = std::system((cmd + " > " + out + ".log 2>&1").c_str());
-  const std::string log = read_text(out + ".log");
-  std::printf("%s\n", log.c_str());
+  const auto [status, log] =
+      run_operate(map, out, "--speeds 3 --transient " + std::string(CENTREC_SOURCE_DIR) + "/cases/cloud_70pct_60s.csv");
   ASSERT_EQ(status, 0) << log;
   const auto j = nlohmann::json::parse(read_text(out + "/operate.json"));
   ASSERT_TRUE(j["operating_point"].is_object());
@@ -328,12 +339,7 @@ TEST(OperateCli, AMapWithoutAStableCellStillWritesItsAnswer) {
   const Geometry g{0.12, 0.171, 160.0, 0.0357, 0.016, 6e-3};
   const std::string map = synthetic_map(g, "operate_cli_no_cell", true);
   const std::string out = centrec::testing::fresh_dir("operate_cli_no_cell_out") + "/out";
-  const std::string cmd = std::string(CENTREC_BINARY) + " operate " + std::string(CENTREC_SOURCE_DIR) +
-                          "/cases/quickstart.yaml --map " + map + " --target-outlet 1100 --out " + out +
-                          " --no-plots --set thermal.grid.nz=40 --set thermal.grid.nxi=12";
-  const int status = std::system((cmd + " > " + out + ".log 2>&1").c_str());
-  const std::string log = read_text(out + ".log");
-  std::printf("%s\n", log.c_str());
+  const auto [status, log] = run_operate(map, out, "");
   ASSERT_TRUE(WIFEXITED(status)) << log;
   EXPECT_EQ(WEXITSTATUS(status), 3) << log;
   ASSERT_TRUE(std::filesystem::exists(out + "/operate.json")) << log;
@@ -354,12 +360,7 @@ TEST(OperateCli, DrawsTheMapWhereTheSurrogateHasNoFilmOffTheWindow) {
   g.u_flow = -2.0;
   const std::string map = synthetic_map(g, "operate_cli_no_film_map");
   const std::string out = centrec::testing::fresh_dir("operate_cli_no_film") + "/out";
-  const std::string cmd = std::string(CENTREC_BINARY) + " operate " + std::string(CENTREC_SOURCE_DIR) +
-                          "/cases/quickstart.yaml --map " + map + " --target-outlet 1100 --speeds 3 --out " + out +
-                          " --no-plots --set thermal.grid.nz=40 --set thermal.grid.nxi=12";
-  const int status = std::system((cmd + " > " + out + ".log 2>&1").c_str());
-  const std::string log = read_text(out + ".log");
-  std::printf("%s\n", log.c_str());
+  const auto [status, log] = run_operate(map, out, "--speeds 3");
   ASSERT_TRUE(WIFEXITED(status)) << log;
   EXPECT_TRUE(WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 3) << log;
   const std::string grid = read_text(out + "/operate_map.csv");
