@@ -32,7 +32,7 @@ struct DemOptions {
 };
 
 void print_dem_help(const CommandLine& app) {
-  std::printf("usage: centrec dem CASE.yaml [options]\n       centrec dem --resume DIR [--threads N]\n\n%s\n",
+  std::printf("usage: centrec dem CASE.yaml [options]\n       centrec dem --resume DIR [--threads N] [--set dem.run.max_extension=S] [--set dem.sampling.turns=N]\n\n%s\n",
               app.options_text().c_str());
   std::printf(
       "Runs the DEM of the CentRec drum (or periodic slice) described by the case's\n"
@@ -55,7 +55,10 @@ void print_dem_help(const CommandLine& app) {
       "Ctrl-C stops at once). --resume DIR continues a stopped or killed run from it with the\n"
       "case stored there, --duration included (a CASE.yaml given too must match it); the\n"
       "result is bitwise the same as the uninterrupted run's. A killed sampling turn is\n"
-      "sampled again from its start.\n");
+      "sampled again from its start. A run still spinning up (its checkpoint says so) may be\n"
+      "resumed with more --set dem.run.max_extension=S (a drum not steady at its cap keeps\n"
+      "filling instead of sampling a filling film) or another --set dem.sampling.turns=N; it\n"
+      "then equals a whole run started with those values.\n");
 }
 
 // Declares the options of `centrec dem` on `app`, each bound to its member of `o`.
@@ -70,16 +73,41 @@ void declare(CommandLine& app, DemOptions& o) {
   add_engine_options(app, o.engine);
 }
 
+// The keys a resumed run still spinning up may change: a drum that is not steady at its
+// extension's cap would otherwise sample a filling film or start again from t = 0.
+bool lengthens_spin_up(const std::string& key) {
+  return key == "dem.run.max_extension" || key == "dem.sampling.turns";
+}
+
+// Refuses a lengthening the checkpoint cannot take: the run must still be spinning up, and
+// the new cap must lie past its time (the resumed run then equals a whole run started with
+// the new values, as the spin-up's chunks up to the checkpoint are the same).
+void check_spin_up_lengthening(const DemOptions& o, const io::RunCheckpoint& ck, const config::DemCase& dc) {
+  bool lengthened = false;
+  for (const auto& [key, value] : o.overrides.keys) lengthened = lengthened || lengthens_spin_up(key);
+  if (!lengthened) return;
+  if (ck.phase != "spin-up")
+    throw UsageError("dem.run.max_extension and dem.sampling.turns change a resumed run only while it spins up; " +
+                     io::checkpoint_path(o.resume_dir) + " is in its " + ck.phase + " phase");
+  const double t = ck.scene.engine.time, cap = dc.run.duration + dc.run.extension_cap();
+  if (cap <= t)
+    throw UsageError("dem.run.max_extension: the spin-up would end at t = " + std::to_string(cap) +
+                     " s, before the checkpoint's t = " + std::to_string(t) + " s; give a longer one");
+}
+
 // Checks what `declare` read; throws UsageError.
 void check(DemOptions& o) {
   if (!o.resume_dir.empty()) {
     if (o.engine.engine != "centrec") throw UsageError("--resume is for the native engine (centrec) only");
-    // A resumed run continues the case it started with; only the thread count may change.
+    // A resumed run continues the case it started with; only the thread count may change,
+    // and, while it is still spinning up, how long it may wait for steady flow and how many
+    // turns it then samples (checked against the checkpoint in spin_up_lengthening).
     for (const auto& [key, value] : o.overrides.keys)
-      if (key != "dem.run.threads")
+      if (key != "dem.run.threads" && !lengthens_spin_up(key))
         throw UsageError(key + " cannot change a resumed run: it continues to the " + key.substr(key.find('.') + 1) +
                          " stored in " + io::checkpoint_path(o.resume_dir) +
-                         " (the first run's --duration or --set, if it had one)");
+                         " (the first run's --duration or --set, if it had one; a run still spinning up may be "
+                         "given more dem.run.max_extension or dem.sampling.turns)");
     if (o.out_given && std::filesystem::path(o.out_dir).lexically_normal() !=
                            std::filesystem::path(o.resume_dir).lexically_normal())
       throw UsageError("--resume " + o.resume_dir + " continues the run in that folder; --out " + o.out_dir +
@@ -134,6 +162,7 @@ int cmd_dem(const Args& args) {
   // `centrec run`.
   cf = checked_overrides(cf, opt.overrides, "dem");
   const config::DemCase dc = checked_dem(cf, opt.overrides, "dem");
+  if (ck) check_spin_up_lengthening(opt, *ck, dc);
   const io::OutputFolder out(opt.out_dir);
   const io::RunFolderClaim claim(opt.out_dir, "centrec dem " + (ck ? "--resume " + opt.resume_dir : opt.case_path),
                                  ck ? io::FolderUse::resume : folder_use(opt.overwrite));

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <random>
 #include <string>
@@ -121,10 +122,10 @@ TEST(InterruptResume, SigintCheckpointsAndTheResumedRunEqualsTheWholeOne) {
 }
 
 namespace {
-// Starts `centrec dem CASE --out DIR --no-plots` and SIGKILLs it once a checkpoint inside its
-// first sampled turn exists (after `snapshots` of the turn's snapshots). False if the run
-// ended first.
-bool kill_inside_the_first_sampled_turn(const std::string& case_path, const std::string& dir, int snapshots) {
+// Starts `centrec dem CASE --out DIR --no-plots` and SIGKILLs it once its checkpoint satisfies
+// `reached`. False if the run ended first, or the checkpoint left behind does not satisfy it.
+bool kill_at_checkpoint(const std::string& case_path, const std::string& dir,
+                        const std::function<bool(const centrec::io::RunCheckpoint&)>& reached) {
   const pid_t child = ::fork();
   if (child == 0) {
     const int null = ::open("/dev/null", O_WRONLY);
@@ -140,14 +141,21 @@ bool kill_inside_the_first_sampled_turn(const std::string& case_path, const std:
     if (::waitpid(child, &status, WNOHANG) == child) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
     try {
-      const auto ck = centrec::io::read_checkpoint(dir);
-      inside = ck.phase == "sampling" && ck.turn_snapshots >= snapshots;
+      inside = reached(centrec::io::read_checkpoint(dir));
     } catch (const std::exception&) {
     }
   }
   ::kill(child, SIGKILL);
   ::waitpid(child, &status, 0);
-  return inside && WIFSIGNALED(status);
+  return inside && WIFSIGNALED(status) && reached(centrec::io::read_checkpoint(dir));
+}
+
+// Killed once a checkpoint inside its first sampled turn exists (after `snapshots` of the
+// turn's snapshots).
+bool kill_inside_the_first_sampled_turn(const std::string& case_path, const std::string& dir, int snapshots) {
+  return kill_at_checkpoint(case_path, dir, [&](const centrec::io::RunCheckpoint& ck) {
+    return ck.phase == "sampling" && ck.turn_snapshots >= snapshots;
+  });
 }
 
 // The last progress line's "t = DONE of TOTAL s".
@@ -278,5 +286,53 @@ TEST(InterruptResume, AResumedSamplingPhaseCountsItsProgressToTheRunsEnd) {
               total, t_end);
   EXPECT_NEAR(done, t_end, 1e-3);
   EXPECT_NEAR(total, t_end, 1e-3) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(InterruptResume, ASpinUpResumedWithALongerExtensionAndMoreTurnsEqualsTheWholeLongerRun) {
+  // A flow never steady to 1e-6: the spin-up runs to its cap. The first run may extend by
+  // 0.05 s and sample 1 turn; it is killed inside its extension and resumed with 0.1 s and 2
+  // turns, which must equal a run started with those.
+  std::string text = centrec::testing::kResumeCase;
+  text.replace(text.find("progress_interval: 1000"), 23,
+               "progress_interval: 1000, steady_tolerance: 1.0e-6, max_extension: 0.05");
+  text.replace(text.find("turns: 2,"), 9, "turns: 1,");
+  const std::string dir = centrec::testing::fresh_dir("resume_longer");
+  const std::string case_path = centrec::testing::write_case(dir, text);
+  const std::string whole = dir + "/whole", killed = dir + "/killed";
+  const BinaryRun w = run_binary({"dem", case_path, "--out", whole, "--no-plots", "--set", "dem.run.max_extension=0.1",
+                                  "--set", "dem.sampling.turns=2"},
+                                 300.0);
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  ASSERT_TRUE(kill_at_checkpoint(case_path, killed, [](const centrec::io::RunCheckpoint& ck) {
+    return ck.phase == "spin-up" && ck.scene.engine.time > 0.045;
+  })) << "no checkpoint inside the extension";
+  const double t_ck = centrec::io::read_checkpoint(killed).scene.engine.time;
+
+  // Too short an extension for the checkpoint's time is refused, naming both times.
+  const BinaryRun shorter = run_binary({"dem", "--resume", killed, "--set", "dem.run.max_extension=0.001"}, 30.0);
+  EXPECT_EQ(shorter.exit_code, 2) << shorter.err;
+  EXPECT_NE(shorter.err.find("before the checkpoint's t ="), std::string::npos) << shorter.err;
+
+  const BinaryRun r = run_binary({"dem", "--resume", killed, "--no-plots", "--set", "dem.run.max_extension=0.1", "--set",
+                                  "dem.sampling.turns=2"},
+                                 300.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::size_t compared =
+      bitwise_equal_values(whole, killed, {"/mass_flow/time", "/mass_flow/fed", "/mass_flow/out", "/mass_flow/holdup",
+                                           "/film/thickness_mean", "/film/axial_velocity_mean",
+                                           "/film/solid_fraction_mean"});
+  const double t_end = dataset(killed, "/mass_flow/time").back(), period = 60.0 / 320.16;
+  std::printf("killed at t = %.4f s in the extension; resumed to t = %.4f s; %zu values bitwise equal to the longer "
+              "run left alone\n",
+              t_ck, t_end, compared);
+  EXPECT_GT(compared, 100u);
+  EXPECT_NEAR(t_end, 0.04 + 0.1 + 2 * period, 0.01);  // the longer cap and two turns, not 0.09 s + one
+  EXPECT_NE(slurp(killed + "/summary.json").find("max_extension: 0.1"), std::string::npos);
+
+  // Once sampling has begun (here: a finished run), the spin-up can no longer be lengthened.
+  const BinaryRun late = run_binary({"dem", "--resume", whole, "--set", "dem.sampling.turns=3"}, 30.0);
+  EXPECT_EQ(late.exit_code, 2) << late.err;
+  EXPECT_NE(late.err.find("only while it spins up"), std::string::npos) << late.err;
   std::filesystem::remove_all(dir);
 }
