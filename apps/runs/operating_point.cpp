@@ -91,14 +91,21 @@ void solve_at_speed(const SurrogateThermal& th, double target, double lo, double
 }  // namespace
 
 OperatingAnswer find_operating_point(const OperatingMap& m, const SurrogateThermal& th, double target_T_out,
-                                     int n_speeds, double min_thickness_d) {
+                                     int n_speeds, const OperatingCriterion& criterion) {
   if (n_speeds < 1) throw std::invalid_argument("operating point: at least one speed");
   OperatingAnswer out;
   out.target_T_out = target_T_out;
-  char crit[160];
-  std::snprintf(crit, sizeof crit, "highest efficiency at T_out = %.2f K inside the stable window%s", target_T_out,
-                min_thickness_d > 0 ? (", film >= " + std::to_string(min_thickness_d) + " d").c_str() : "");
+  char crit[200];
+  std::snprintf(crit, sizeof crit, "highest efficiency at T_out = %.2f K inside the stable window", target_T_out);
   out.criterion = crit;
+  if (criterion.min_thickness_d > 0) {
+    std::snprintf(crit, sizeof crit, ", film >= %.3g d", criterion.min_thickness_d);
+    out.criterion += crit;
+  }
+  if (criterion.min_margin_rpm > 0) {
+    std::snprintf(crit, sizeof crit, ", >= %.3g rpm from the window's speed edges", criterion.min_margin_rpm);
+    out.criterion += crit;
+  }
   // The window's speed range: speeds with a usable mass-flow span.
   double v_lo = 0.0, v_hi = 0.0;
   bool any = false;
@@ -115,6 +122,16 @@ OperatingAnswer find_operating_point(const OperatingMap& m, const SurrogateTherm
     out.why_none = "the map has no stable cell (no 2 x 2 block of usable points)";
     return out;
   }
+  const double R = criterion.min_margin_rpm;
+  if (v_hi - v_lo < 2.0 * R) {
+    char why[200];
+    std::snprintf(why, sizeof why, "the window's speeds (%.4g-%.4g rpm) leave no speed %.3g rpm from both edges",
+                  v_lo, v_hi, R);
+    out.why_none = why;
+    return out;
+  }
+  v_lo += R;
+  v_hi -= R;
   for (int k = 0; k < n_speeds; ++k) {
     OperatingCandidate c;
     c.speed_rpm = n_speeds == 1 ? 0.5 * (v_lo + v_hi) : v_lo + (v_hi - v_lo) * k / (n_speeds - 1);
@@ -124,9 +141,17 @@ OperatingAnswer find_operating_point(const OperatingMap& m, const SurrogateTherm
     } else {
       solve_at_speed(th, target_T_out, span.first, span.second, c);
       if (c.found) c.margin = m.margin(c.speed_rpm, c.mass_flow);
-      if (c.found && c.answer.thickness_d < min_thickness_d) {
+      if (c.found && c.answer.thickness_d < criterion.min_thickness_d) {
         c.found = false;
         c.why_not = "film " + std::to_string(c.answer.thickness_d) + " d thinner than the minimum";
+      }
+      // The window may be narrower at this mass flow than over the speeds tried.
+      if (c.found && std::min(c.margin.speed_below, c.margin.speed_above) < R * (1.0 - 1e-9)) {
+        c.found = false;
+        char why[160];
+        std::snprintf(why, sizeof why, "%.4g kg/s lies %.3g / %.3g rpm from the window's speed edges, less than %.3g",
+                      c.mass_flow, c.margin.speed_below, c.margin.speed_above, R);
+        c.why_not = why;
       }
     }
     out.candidates.push_back(c);
@@ -134,6 +159,42 @@ OperatingAnswer find_operating_point(const OperatingMap& m, const SurrogateTherm
       out.best = static_cast<int>(out.candidates.size()) - 1;
   }
   return out;
+}
+
+CheckRefinement refine_by_full_runs(double target, double mass_flow, double surrogate_slope,
+                                    std::pair<double, double> span, int max_runs, double tolerance,
+                                    const std::function<double(double)>& full_T_out) {
+  if (max_runs < 1) throw std::invalid_argument("check: at least one full run");
+  CheckRefinement r;
+  double m = mass_flow;
+  char why[200];
+  for (int k = 0; k < max_runs; ++k) {
+    r.runs.push_back({m, full_T_out(m)});
+    const FullRun& last = r.runs.back();
+    if (std::abs(last.T_out - target) <= tolerance) return r;
+    if (k + 1 == max_runs) break;
+    double slope = surrogate_slope;  // dT_out / dmdot, K per kg/s
+    if (r.runs.size() >= 2) {
+      const FullRun& prev = r.runs[r.runs.size() - 2];
+      if (last.mass_flow != prev.mass_flow) slope = (last.T_out - prev.T_out) / (last.mass_flow - prev.mass_flow);
+    }
+    if (!(slope < 0.0)) {
+      std::snprintf(why, sizeof why, "the slope dT_out/dmdot is %.4g K per kg/s, not negative: no secant step", slope);
+      r.why_stopped = why;
+      return r;
+    }
+    m = last.mass_flow + (target - last.T_out) / slope;
+    if (m < span.first || m > span.second) {
+      std::snprintf(why, sizeof why, "the secant step asks %.5g kg/s, outside the window's %.5g-%.5g kg/s at this speed",
+                    m, span.first, span.second);
+      r.why_stopped = why;
+      return r;
+    }
+  }
+  std::snprintf(why, sizeof why, "%d full run(s) made (--check-runs), the last %+.2f K from the target", max_runs,
+                r.runs.back().T_out - target);
+  r.why_stopped = why;
+  return r;
 }
 
 }  // namespace centrec::runs

@@ -3,7 +3,9 @@
 // case's thermal model (its flux, inlet temperature, cavity) on the film surrogate of an
 // operating map, the mass flow found at each speed of the stable window by bracketed root
 // finding (T_out falls with the mass flow), the speed chosen by a stated criterion.
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "config/case_thermal.hpp"
@@ -55,11 +57,40 @@ struct OperatingAnswer {
   std::string why_none;                        // set when the map has no window to search at all
 };
 
-// Tries n_speeds speeds evenly over the window's speeds; at each, the mass flow in the
-// window's span at that speed whose T_out is the target within 0.02 K. The best is the one
-// of highest efficiency among those with a film at least min_thickness_d thick.
+// What an answer must have besides reaching the target: a film at least min_thickness_d
+// thick, and at least min_margin_rpm to the window's speed edges on both sides (efficiency
+// rises with speed towards the film's lock, so the best point otherwise sits on the edge).
+struct OperatingCriterion {
+  double min_thickness_d = 0.0;
+  double min_margin_rpm = 0.0;
+};
+
+// Tries n_speeds speeds evenly over the window's speeds (less the speed margin at both
+// ends); at each, the mass flow in the window's span at that speed whose T_out is the target
+// within 0.02 K. The best is the one of highest efficiency among those the criterion accepts.
 OperatingAnswer find_operating_point(const OperatingMap& m, const SurrogateThermal& th, double target_T_out,
-                                     int n_speeds, double min_thickness_d);
+                                     int n_speeds, const OperatingCriterion& criterion);
+
+// A full coupled run at a speed and mass flow, as the check of an answer runs it.
+struct FullRun {
+  double mass_flow = 0.0;  // kg/s
+  double T_out = 0.0;      // K
+};
+
+// The check of an answer by full coupled runs at its speed: the first at the answer's mass
+// flow; while T_out misses the target by more than `tolerance`, a secant step in the mass
+// flow, the first through the surrogate's slope dT_out/dmdot at the answer, the next ones
+// through the last two full runs, up to `max_runs` runs. A step that would leave the
+// window's span at that speed (`span`) stops the refinement, as does a slope that is not
+// negative (T_out must fall with the mass flow). Returns the runs made, in order, and says
+// in `why_stopped` why it stopped short of the tolerance (empty when the last run is within).
+struct CheckRefinement {
+  std::vector<FullRun> runs;
+  std::string why_stopped;
+};
+CheckRefinement refine_by_full_runs(double target, double mass_flow, double surrogate_slope,
+                                    std::pair<double, double> span, int max_runs, double tolerance,
+                                    const std::function<double(double)>& full_T_out);
 
 }  // namespace centrec::runs
 

@@ -251,7 +251,7 @@ TEST(OperatingPoint, FindsAKnownPointOfASyntheticSurrogate) {
   const centrec::runs::SurrogateThermal th(small_thermal_case(), s, 1.0);
   // The truth: the thermal model on the synthetic law's own film at 45 rpm, 2.5 kg/s.
   const auto truth = th.on_film(synthetic_film(45.0, 2.5), 2.5);
-  const auto a = centrec::runs::find_operating_point(m, th, truth.T_out, 5, 0.0);
+  const auto a = centrec::runs::find_operating_point(m, th, truth.T_out, 5, {});
   ASSERT_EQ(a.candidates.size(), 5u);  // 40, 45, ..., 60 rpm
   const auto& c = a.candidates[1];
   std::printf("target %.3f K: at %.1f rpm found %.5f kg/s (truth 2.5), T_out %.3f K, %d solves of %.3f s\n",
@@ -268,9 +268,93 @@ TEST(OperatingPoint, FindsAKnownPointOfASyntheticSurrogate) {
     }
   EXPECT_TRUE(m.inside(a.candidates[a.best].speed_rpm, a.candidates[a.best].mass_flow));
   // A target no mass flow of the window reaches is reported, not extrapolated.
-  const auto hot = centrec::runs::find_operating_point(m, th, truth.T_out + 2000.0, 2, 0.0);
+  const auto hot = centrec::runs::find_operating_point(m, th, truth.T_out + 2000.0, 2, {});
   EXPECT_EQ(hot.best, -1);
   EXPECT_NE(hot.candidates[0].why_not.find("T_out spans"), std::string::npos) << hot.candidates[0].why_not;
+}
+
+TEST(OperatingPoint, KeepsTheSpeedMarginAskedForOffTheWindowsEdges) {
+  // The synthetic map's window spans 40-60 rpm (50-60 rpm only below 4.5 kg/s): with 5 rpm
+  // asked, every speed tried lies in 45-55 rpm and the answer is at least 5 rpm from both
+  // edges at its own mass flow; 15 rpm leaves no speed and says so.
+  const auto m = centrec::runs::read_operating_map(synthetic_map());
+  const FilmSurrogate s(centrec::runs::surrogate_samples(m, 1.0));
+  const centrec::runs::SurrogateThermal th(small_thermal_case(), s, 1.0);
+  const double target = th.at(50.0, 3.0).T_out;
+  const auto free = centrec::runs::find_operating_point(m, th, target, 5, {});
+  const auto kept = centrec::runs::find_operating_point(m, th, target, 5, {0.0, 5.0});
+  ASSERT_GE(free.best, 0);
+  ASSERT_GE(kept.best, 0);
+  const auto& f = free.candidates[free.best];
+  const auto& k = kept.candidates[kept.best];
+  std::printf("without a margin: %.2f rpm (margins -%.2f / +%.2f rpm); with 5 rpm: %.2f rpm (-%.2f / +%.2f rpm), "
+              "efficiency %.4f vs %.4f\n",
+              f.speed_rpm, f.margin.speed_below, f.margin.speed_above, k.speed_rpm, k.margin.speed_below,
+              k.margin.speed_above, f.answer.efficiency, k.answer.efficiency);
+  EXPECT_LT(std::min(f.margin.speed_below, f.margin.speed_above), 5.0);  // free, the best is nearer an edge
+  for (const auto& c : kept.candidates) {
+    EXPECT_GE(c.speed_rpm, 45.0 - 1e-9);
+    EXPECT_LE(c.speed_rpm, 55.0 + 1e-9);
+  }
+  EXPECT_GE(k.margin.speed_below, 5.0 - 1e-9);
+  EXPECT_GE(k.margin.speed_above, 5.0 - 1e-9);
+  EXPECT_NE(kept.criterion.find(">= 5 rpm from the window's speed edges"), std::string::npos) << kept.criterion;
+  const auto none = centrec::runs::find_operating_point(m, th, target, 5, {0.0, 15.0});
+  EXPECT_EQ(none.best, -1);
+  EXPECT_NE(none.why_none.find("leave no speed 15 rpm from both edges"), std::string::npos) << none.why_none;
+}
+
+TEST(OperatingPoint, FullRunsRefineAnAnswerTheSurrogateMisses) {
+  // The "full model" is the thermal model on a film 30 % thicker than the surrogate's law at
+  // 45 rpm: the surrogate's answer misses its target by more than 3 K; secant steps in the
+  // mass flow (the first through the surrogate's slope) reach it within 3 K, at the full
+  // model's own root (found here by bisection) within the step's accuracy.
+  const auto m = centrec::runs::read_operating_map(synthetic_map());
+  const FilmSurrogate s(centrec::runs::surrogate_samples(m, 1.0));
+  const centrec::runs::SurrogateThermal th(small_thermal_case(), s, 1.0);
+  auto full = [&](double mdot) {
+    FilmField f = synthetic_film(45.0, mdot);
+    for (double& t : f.t) t *= 1.3;
+    for (double& e : f.eta) e *= 1.3;
+    return th.on_film(f, mdot).T_out;
+  };
+  const double target = th.at(45.0, 2.5).T_out;  // the surrogate's answer at 45 rpm is 2.5 kg/s
+  const double slope = (th.at(45.0, 2.525).T_out - th.at(45.0, 2.475).T_out) / 0.05;
+  const double first_miss = full(2.5) - target;
+  double lo = 2.0, hi = 4.0;  // the full model's root by bisection
+  for (int i = 0; i < 50; ++i) (full(0.5 * (lo + hi)) > target ? lo : hi) = 0.5 * (lo + hi);
+  const auto r = centrec::runs::refine_by_full_runs(target, 2.5, slope, {2.0, 4.5}, 4, 3.0, full);
+  std::printf("target %.2f K; surrogate slope %.1f K per kg/s; first full run %+.2f K; root %.5f kg/s;", target, slope,
+              first_miss, 0.5 * (lo + hi));
+  for (const auto& run : r.runs) std::printf(" [%.5f kg/s: %+.2f K]", run.mass_flow, run.T_out - target);
+  std::printf("\n");
+  ASSERT_GT(std::abs(first_miss), 3.0) << "the test needs a surrogate that misses";
+  EXPECT_TRUE(r.why_stopped.empty()) << r.why_stopped;
+  EXPECT_GE(r.runs.size(), 2u);
+  EXPECT_LE(std::abs(r.runs.back().T_out - target), 3.0);
+  EXPECT_NEAR(r.runs.back().mass_flow, 0.5 * (lo + hi), 3.0 / std::abs(slope) * 2.0);
+  // One run allowed: the miss is reported, not hidden.
+  const auto one = centrec::runs::refine_by_full_runs(target, 2.5, slope, {2.0, 4.5}, 1, 3.0, full);
+  EXPECT_EQ(one.runs.size(), 1u);
+  EXPECT_NE(one.why_stopped.find("1 full run(s) made"), std::string::npos) << one.why_stopped;
+}
+
+TEST(OperatingPoint, TheChecksSecantStopsAtTheWindowAndOnAWrongSlope) {
+  // A linear full model T = 1500 - 100 mdot K: from 2 kg/s a target of 1290 K asks 2.1 kg/s,
+  // one secant step with the exact slope; a target past the window's span stops with the
+  // flow it asked for; a slope that is not negative stops at once.
+  auto linear = [](double mdot) { return 1500.0 - 100.0 * mdot; };
+  const auto hit = centrec::runs::refine_by_full_runs(1290.0, 2.0, -100.0, {1.0, 3.0}, 3, 0.01, linear);
+  ASSERT_EQ(hit.runs.size(), 2u);
+  EXPECT_NEAR(hit.runs[1].mass_flow, 2.1, 1e-12);
+  EXPECT_TRUE(hit.why_stopped.empty());
+  const auto out = centrec::runs::refine_by_full_runs(1150.0, 2.0, -100.0, {1.0, 3.0}, 3, 0.01, linear);
+  EXPECT_EQ(out.runs.size(), 1u);
+  EXPECT_NE(out.why_stopped.find("asks 3.5 kg/s, outside the window's 1-3 kg/s"), std::string::npos)
+      << out.why_stopped;
+  const auto wrong = centrec::runs::refine_by_full_runs(1290.0, 2.0, +50.0, {1.0, 3.0}, 3, 0.01, linear);
+  EXPECT_EQ(wrong.runs.size(), 1u);
+  EXPECT_NE(wrong.why_stopped.find("not negative"), std::string::npos) << wrong.why_stopped;
 }
 
 namespace {
