@@ -45,7 +45,9 @@ int cmd_operate(const Args& args) {
         "                       [--turndown F]] [--set KEY=VALUE ...] [figure flags]\n\n"
         "The speed and mass flow at which the receiver of CASE reaches the target outlet\n"
         "temperature (kelvin) at the case's flux (docs/operating.md). SWEEP_DIR is a `centrec\n"
-        "sweep` of CASE over speed x mass flow (its operating map): a point is usable when its\n"
+        "sweep` of CASE over speed x mass flow (its operating map; or of another receiver of the\n"
+        "same scaled film: the same dem: section, dem_diameter_d, tilt and L/D, whose map is read\n"
+        "as this one's by eqs 1-2): a point is usable when its\n"
         "DEM film was steady and carried the DEM's flow within 3 %%; a grid cell with four usable\n"
         "corners is inside the stable window. The usable points' films are fitted as smooth\n"
         "functions of speed and mass flow (the film surrogate; its leave-one-out error is\n"
@@ -105,18 +107,22 @@ int cmd_operate(const Args& args) {
   FigureOptions figures;
   add_figure_flags(app, figures);
   app.read(args);
+  // dem.run.threads changes no result (the DEM cache's key leaves it out): it sets how many
+  // cores the check's full runs take, e.g. one beside a long DEM.
   for (const auto& [key, value] : overrides.keys)
-    if (key.rfind("thermal.", 0) != 0)
+    if (key.rfind("thermal.", 0) != 0 && key != "dem.run.threads")
       throw UsageError("--set " + key + "=" + value +
                        ": the map's films were run with the case's DEM and receiver; operate changes only "
-                       "thermal.* keys (the flux, the inlet temperature, the cavity)");
+                       "thermal.* keys (the flux, the inlet temperature, the cavity) and dem.run.threads");
   const config::CaseFile cf = checked_overrides(config::read_case_file(case_path), overrides, "operate");
   if (!cf.receiver || !cf.thermal || !cf.thermal->film_source.from_dem())
     throw UsageError(case_path +
                      ": operate needs a receiver whose film comes from its DEM (a `receiver:`, `dem:` and "
                      "`thermal:` section, no `film:`), as its operating map was run");
   const double receiver_d = cf.receiver->op.diameter;
-  const runs::OperatingMap map = runs::read_operating_map(map_dir);
+  // The map must be of this receiver, or of one of the same scaled film (eqs 1-2), read as this one's.
+  const runs::MapScaling scaling = runs::map_scaling_for(map_dir, cf.resolved_yaml);
+  const runs::OperatingMap map = runs::read_operating_map(map_dir, scaling);
   const io::OutputFolder out(out_dir);
   const io::RunFolderClaim claim(out_dir, "centrec operate " + case_path, folder_use(overwrite));
   const auto t0 = std::chrono::steady_clock::now();
@@ -128,6 +134,12 @@ int cmd_operate(const Args& args) {
   int usable = 0;
   std::printf("centrec operate %s: map %s, %zu points (%zu speeds x %zu mass flows)\n", case_path.c_str(),
               map_dir.c_str(), map.points.size(), map.speeds.size(), map.flows.size());
+  if (!scaling.identity()) {
+    std::printf("  the map is of another receiver of the same scaled film (the same DEM by eqs 1-3), read as this "
+                "one's: speeds x %.6g (omega^2 R kept), mass flows x %.6g (mdot / R kept), film length x %.6g\n",
+                scaling.speed, scaling.flow, scaling.length);
+    j["map_scaling"] = {{"speed", scaling.speed}, {"mass_flow", scaling.flow}, {"length", scaling.length}};
+  }
   for (const auto& p : map.points) {
     usable += p.usable;
     std::printf("  %8.3f rpm  %8.4f kg/s  %s  %s\n", p.speed_rpm, p.mass_flow, p.usable ? "usable  " : "NOT used",

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
+#include "config/case_file.hpp"
 #include "io/film_field_h5.hpp"
 #include "io/summary_json.hpp"
+#include "runs/dem_inputs.hpp"
 
 namespace centrec::runs {
 
@@ -116,11 +120,12 @@ std::pair<double, double> OperatingMap::flow_span(double speed_rpm) const {
   return best;
 }
 
-OperatingMap read_operating_map(const std::string& sweep_dir) {
+OperatingMap read_operating_map(const std::string& sweep_dir, const MapScaling& scaling) {
   const std::string path = sweep_dir + "/sweep.json";
   const nlohmann::json j = io::read_json_file(path);
   OperatingMap m;
   m.dir = sweep_dir;
+  m.scaling = scaling;
   m.case_path = j.value("case", "");
   bool speed = false, flow = false;
   for (const auto& a : j.at("axes")) {
@@ -142,8 +147,8 @@ OperatingMap read_operating_map(const std::string& sweep_dir) {
                                     "sweep CASE` with the case's sweep: section, or --grid on both)");
   for (const auto& row : j.at("points")) {
     MapPoint p;
-    p.speed_rpm = row.at("speed_rpm").get<double>();
-    p.mass_flow = row.at("mass_flow_kg_s").get<double>();
+    p.speed_rpm = row.at("speed_rpm").get<double>() * scaling.speed;
+    p.mass_flow = row.at("mass_flow_kg_s").get<double>() * scaling.flow;
     // The point's folder under the sweep's, wherever the sweep ran from.
     p.dir = sweep_dir + "/" + std::filesystem::path(row.at("dir").get<std::string>()).filename().string();
     if (row.value("status", 1) != 0) {
@@ -170,6 +175,75 @@ OperatingMap read_operating_map(const std::string& sweep_dir) {
   return m;
 }
 
+namespace {
+
+// A point's start and spin-up vary over a map (read_operating_map's axes): not the film's.
+bool varies_per_point(const std::string& key) {
+  return key.rfind("dem.initial_film.", 0) == 0 || key == "dem.run.duration" || key == "dem.run.max_extension";
+}
+
+// The map's own resolved case: its first finished point's, else the case file it names.
+std::string map_resolved_config(const std::string& sweep_dir) {
+  const nlohmann::json j = io::read_json_file(sweep_dir + "/sweep.json");
+  for (const auto& row : j.at("points")) {
+    const std::string dir =
+        sweep_dir + "/" + std::filesystem::path(row.at("dir").get<std::string>()).filename().string();
+    if (row.value("status", 1) == 0 && std::filesystem::exists(dir + "/summary.json")) {
+      const nlohmann::json s = io::read_json_file(dir + "/summary.json");
+      if (s.contains("resolved_config") && s["resolved_config"].is_string()) return s["resolved_config"];
+    }
+  }
+  const std::string case_path = j.value("case", "");
+  if (case_path.empty() || !std::filesystem::exists(case_path))
+    throw std::runtime_error(sweep_dir + ": no finished point with a summary.json and no readable case file (\"" +
+                             case_path + "\" in sweep.json): operate cannot tell which receiver the map is of");
+  return config::read_case_file(case_path).resolved_yaml;
+}
+
+}  // namespace
+
+MapScaling map_scaling_for(const std::string& sweep_dir, const std::string& case_resolved_yaml) {
+  auto mine = dem_input_values(case_resolved_yaml, {"dem", "receiver"});
+  auto theirs = dem_input_values(map_resolved_config(sweep_dir), {"dem", "receiver"});
+  auto number = [](const std::map<std::string, std::string>& m, const std::string& k) {
+    const auto it = m.find(k);
+    return it == m.end() ? 0.0 : std::strtod(it->second.c_str(), nullptr);
+  };
+  const double D = number(mine, "receiver.diameter"), L = number(mine, "receiver.length");
+  const double D_map = number(theirs, "receiver.diameter"), L_map = number(theirs, "receiver.length");
+  std::string differ;
+  if (!(D > 0 && L > 0 && D_map > 0 && L_map > 0))
+    differ += "\n  receiver.diameter / length: both cases need a receiver";
+  else if (std::abs(L / D - L_map / D_map) > 1e-9 * (L / D))
+    differ += "\n  receiver L / D: " + std::to_string(L / D) + " here, " + std::to_string(L_map / D_map) + " in the map";
+  // The operating point is the map's axes; the size is the scaling; every other key is the film's.
+  auto scaled_or_axis = [](const std::string& k) {
+    return k == "receiver.diameter" || k == "receiver.length" || k == "receiver.speed_rpm" ||
+           k == "receiver.mass_flow" || varies_per_point(k);
+  };
+  std::map<std::string, std::string> keys;
+  for (const auto* m : {&mine, &theirs})
+    for (const auto& kv : *m) keys[kv.first];
+  for (const auto& kv : keys) {
+    const std::string& k = kv.first;
+    if (scaled_or_axis(k)) continue;
+    const auto a = mine.find(k), b = theirs.find(k);
+    const std::string va = a == mine.end() ? "(absent)" : a->second, vb = b == theirs.end() ? "(absent)" : b->second;
+    if (va != vb) differ += "\n  " + k + ": " + va + " here, " + vb + " in the map";
+  }
+  if (number(mine, "receiver.dem_diameter_d") <= 0.0)
+    differ += "\n  receiver.dem_diameter_d: the receiver does not derive its DEM drum (eqs 1-3), so no map scales to it";
+  if (!differ.empty())
+    throw std::runtime_error("the map in " + sweep_dir +
+                             " is not of this receiver's scaled film (eqs 1-3 derive another DEM):" + differ);
+  MapScaling sc;
+  sc.speed = std::sqrt(D_map / D);
+  sc.flow = D / D_map;
+  sc.length = L / L_map;
+  if (D == D_map && L == L_map) sc = MapScaling{};
+  return sc;
+}
+
 std::vector<coupling::SurrogateSample> surrogate_samples(const OperatingMap& m, double receiver_diameter) {
   std::vector<coupling::SurrogateSample> out;
   for (const MapPoint& p : m.points) {
@@ -179,6 +253,10 @@ std::vector<coupling::SurrogateSample> surrogate_samples(const OperatingMap& m, 
     s.mass_flow = p.mass_flow;
     s.film = io::read_film_field(io::H5File::open_read(p.dir + "/film.h5"));
     s.film.drum_diameter = receiver_diameter;
+    for (double& z : s.film.z) z *= m.scaling.length;
+    s.film.length *= m.scaling.length;
+    s.film.omega *= m.scaling.speed;
+    s.film.mdot *= m.scaling.flow;
     out.push_back(std::move(s));
   }
   return out;

@@ -13,8 +13,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "config/case_file.hpp"
 #include "config/case_thermal.hpp"
 #include "coupling/film_surrogate.hpp"
 #include "io/film_field_h5.hpp"
@@ -95,7 +97,9 @@ std::string synthetic_map(const Geometry& g = {}, const std::string& name_of_map
   nlohmann::json axes = {{{"key", "speed_rpm"}, {"column", "speed_rpm"}},
                          {{"key", "mass_flow"}, {"column", "mass_flow_kg_s"}}};
   if (!extra_axis.empty()) axes.push_back({{"key", extra_axis}, {"column", extra_axis}});
-  std::ofstream(dir + "/sweep.json") << nlohmann::json{{"case", "case.yaml"}, {"axes", axes}, {"points", points}};
+  // The map's receiver: the quickstart's case (a sweep's points carry no summary.json here).
+  std::ofstream(dir + "/sweep.json") << nlohmann::json{
+      {"case", std::string(CENTREC_SOURCE_DIR) + "/cases/quickstart.yaml"}, {"axes", axes}, {"points", points}};
   return dir;
 }
 
@@ -245,6 +249,67 @@ TEST(OperatingMap, TakesEachPointsStartAndSpinUpButNoOtherKey) {
   }
 }
 
+TEST(OperatingMap, ReadsAMapOfAnotherReceiverOfTheSameScaledFilmByEqs1And2) {
+  // The quickstart receiver's map (D 0.12 m, L 0.171 m) read for receiver_1m (D 1 m, L 1.425 m:
+  // the same dem: section, dem_diameter_d 80, tilt and L / D): speeds x sqrt(0.06 / 0.5), mass
+  // flows x 0.5 / 0.06, film length x 1.425 / 0.171; the film at a scaled point is the
+  // quickstart's at the original one (in metres and m/s: the DEM is the same).
+  const Geometry g{0.12, 0.171, 160.0, 0.0357, 0.016, 6e-3};
+  const std::string dir = synthetic_map(g, "operating_map_scaled");
+  const std::string src = CENTREC_SOURCE_DIR;
+  const auto r1m = centrec::config::read_case_file(src + "/cases/receiver_1m.yaml");
+  const auto sc = centrec::runs::map_scaling_for(dir, r1m.resolved_yaml);
+  std::printf("scaling: speed x %.9g, mass flow x %.9g, length x %.9g\n", sc.speed, sc.flow, sc.length);
+  EXPECT_NEAR(sc.speed, std::sqrt(0.06 / 0.5), 1e-12);
+  EXPECT_NEAR(sc.flow, 0.5 / 0.06, 1e-12);
+  EXPECT_NEAR(sc.length, 1.425 / 0.171, 1e-12);
+  // Its own receiver reads it as it is.
+  EXPECT_TRUE(centrec::runs::map_scaling_for(dir, centrec::config::read_case_file(src + "/cases/quickstart.yaml")
+                                                      .resolved_yaml)
+                  .identity());
+  const auto own = centrec::runs::read_operating_map(dir);
+  const auto scaled = centrec::runs::read_operating_map(dir, sc);
+  ASSERT_EQ(own.speeds.size(), scaled.speeds.size());
+  EXPECT_NEAR(scaled.speeds[1], 160.0 * sc.speed, 1e-9);
+  EXPECT_NEAR(scaled.flows[1], 0.0357 * sc.flow, 1e-12);
+  EXPECT_EQ(own.inside(150.0, 0.03), scaled.inside(150.0 * sc.speed, 0.03 * sc.flow));
+  const FilmSurrogate a(centrec::runs::surrogate_samples(own, 0.12)), b(centrec::runs::surrogate_samples(scaled, 1.0));
+  const FilmField fa = a.film_at(150.0, 0.03), fb = b.film_at(150.0 * sc.speed, 0.03 * sc.flow);
+  std::printf("at 150 rpm, 0.03 kg/s (quickstart) / %.4f rpm, %.4f kg/s (1 m): thickness %.6g / %.6g m, "
+              "u_surface %.6g / %.6g m/s, length %.4g / %.4g m\n",
+              150.0 * sc.speed, 0.03 * sc.flow, fa.t[0], fb.t[0], fa.u.back(), fb.u.back(), fa.length, fb.length);
+  EXPECT_NEAR(fb.t[0], fa.t[0], 1e-12);
+  EXPECT_NEAR(fb.u.back(), fa.u.back(), 1e-12);
+  EXPECT_NEAR(fb.length, 1.425, 1e-12);
+  EXPECT_NEAR(fb.z.back(), 1.425, 1e-12);
+
+  // Another wall is another film; another L / D another drum: refused, naming the key.
+  std::string text = "title: other\nreceiver: {diameter: 1.0, length: 1.425, speed_rpm: 55.454, mass_flow: 0.2975, "
+                     "tilt_deg: 45, dem_diameter_d: 80}\n"
+                     "dem:\n  rough_wall: {enabled: true, lattice: square, spacing_d: 1.15}\n"
+                     "  slice: {enabled: true, length_d: 9, controller_window_turns: 2, controller_gain: 0.2}\n"
+                     "  initial_film: {particles: 6750}\n"
+                     "  run: {duration: 2.0114, dt: 2.0e-5, skin_d: 0.4, flow_window_turns: 6}\n"
+                     "  sampling: {turns: 6, snapshots_per_turn: 8}\n"
+                     "thermal: {model: 2d, T_in: 873.15, flux: {profile: uniform, q_film: 2.0e5}}\n";
+  const std::string case_dir = centrec::testing::fresh_dir("operating_map_scaled_cases");
+  for (const auto& [from, to, key] : {std::tuple<std::string, std::string, std::string>{
+                                          "spacing_d: 1.15", "spacing_d: 1.15", "dem.rough_wall.spacing_d"},
+                                      {"spacing_d: 1.15", "spacing_d: 1.0", "receiver L / D"}}) {
+    std::string t = text;
+    t.replace(t.find(from), from.size(), to);
+    if (key == "receiver L / D") t.replace(t.find("length: 1.425"), 13, "length: 1.5");
+    const std::string path = centrec::testing::write_case(case_dir, t);
+    try {
+      centrec::runs::map_scaling_for(dir, centrec::config::read_case_file(path).resolved_yaml);
+      ADD_FAILURE() << "a map of another film was read (" << key << ")";
+    } catch (const std::runtime_error& e) {
+      std::printf("refused: %s\n", e.what());
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(OperatingPoint, FindsAKnownPointOfASyntheticSurrogate) {
   const auto m = centrec::runs::read_operating_map(synthetic_map());
   const FilmSurrogate s(centrec::runs::surrogate_samples(m, 1.0));
@@ -388,7 +453,8 @@ TEST(OperateCli, AnswersFromASyntheticMapOfTheQuickstartReceiver) {
   const std::string out = centrec::testing::fresh_dir("operate_cli") + "/out";
   const std::string quickstart = std::string(CENTREC_SOURCE_DIR) + "/cases/quickstart.yaml";
   const auto [status, log] =
-      run_operate(map, out, "--speeds 3 --transient " + std::string(CENTREC_SOURCE_DIR) + "/cases/cloud_70pct_60s.csv");
+      run_operate(map, out, "--speeds 3 --set dem.run.threads=1 --transient " + std::string(CENTREC_SOURCE_DIR) +
+                                "/cases/cloud_70pct_60s.csv");  // the check's thread count is no DEM input
   ASSERT_EQ(status, 0) << log;
   const auto j = nlohmann::json::parse(read_text(out + "/operate.json"));
   ASSERT_TRUE(j["operating_point"].is_object());
