@@ -81,10 +81,18 @@ def main(argv=None):
             ax.plot(b["speed_rpm"], b["mass_flow_kg_s"], "*", color="gold", mec="k", ms=16,
                     label="operating point (%.2f rpm, %.4f kg/s)" % (b["speed_rpm"], b["mass_flow_kg_s"]), clip_on=False,
                     zorder=6)
+        if op.get("checked_operating_point"):
+            k = op["checked_operating_point"]
+            ax.plot(k["speed_rpm"], k["mass_flow_kg_s"], "D", color="lime", mec="k", ms=8, zorder=7,
+                    label="checked by %d full run(s): %.2f K" % (k["full_runs"], k["T_out_K"]), clip_on=False)
         ax.set_yscale("log")
         ax.set_title(title + " (hatched: outside the stable window)", fontsize=9)
         pc.style(ax, "speed (rpm)", "receiver mass flow (kg/s)", legend=False)
     axes[0].legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=8)
+    if op.get("map_scaling"):
+        sc = op["map_scaling"]
+        fig.suptitle("the map of another receiver of the same scaled film (%s), read as this one's by eqs 1-2: "
+                     "speeds x %.4g, mass flows x %.4g" % (op["map"], sc["speed"], sc["mass_flow"]), fontsize=9)
     written = []
     pc.save(fig, out, "operate_map.png", written)
     transient = os.path.join(args.folder, "operate_transient.csv")
