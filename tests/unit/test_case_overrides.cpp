@@ -96,3 +96,42 @@ TEST(CaseOverrides, AKeyIsCheckedByItsOwnReader) {
   EXPECT_NE(refusal("thermal", "900").find("not a key path"), std::string::npos);
   EXPECT_NE(refusal("thermal.T_in.x", "900").find("not a section"), std::string::npos);
 }
+
+TEST(CaseOverrides, TheOperatingPointIsRecordedInTheResolvedCase) {
+  // --speed-rpm and --mass-flow (every sweep point, operate's check) replace the receiver's
+  // operating point: the resolved case (embedded in summary.json and dem.h5, compared by
+  // --dem-from) records the point that ran, not the case file's. Without a receiver they
+  // are the DEM drum's speed and its feed (or a slice's target flow).
+  const config::CaseFile cf = config::read_case_file(CENTREC_SOURCE_DIR "/cases/receiver_1m.yaml");
+  config::Overrides o;
+  o.speed_rpm = 59.0;
+  o.mass_flow = 0.4;
+  const config::CaseFile with = config::with_overrides(cf, o);
+  std::printf("receiver_1m at --speed-rpm 59 --mass-flow 0.4: receiver.speed_rpm %s, receiver.mass_flow %s\n",
+              config::resolved_value(with, "receiver.speed_rpm").c_str(),
+              config::resolved_value(with, "receiver.mass_flow").c_str());
+  EXPECT_EQ(config::resolved_value(with, "receiver.speed_rpm"), "59");
+  EXPECT_EQ(config::resolved_value(with, "receiver.mass_flow"), "0.4");
+  EXPECT_DOUBLE_EQ(with.receiver->op.mass_flow, 0.4);
+  // The DEM it derives is the one the flags give on the case file.
+  const auto a = config::effective_dem(*with.dem, &*with.receiver, o);
+  const auto b = config::effective_dem(*cf.dem, &*cf.receiver, o);
+  EXPECT_EQ(a.scene.drum.omega, b.scene.drum.omega);
+  EXPECT_EQ(a.scene.slice.target_mass_flow, b.scene.slice.target_mass_flow);
+  // An odd value keeps every bit.
+  o.speed_rpm = 55.454000000000001;
+  o.mass_flow = 0.1 + 0.2;
+  const config::CaseFile odd = config::with_overrides(cf, o);
+  EXPECT_EQ(odd.receiver->op.mass_flow, 0.1 + 0.2);
+
+  // No receiver: a periodic slice of its own drum.
+  const config::CaseFile slice = config::read_case_file(CENTREC_SOURCE_DIR "/cases/d12_slice.yaml");
+  ASSERT_FALSE(slice.receiver);
+  config::Overrides s;
+  s.speed_rpm = 150.0;
+  s.mass_flow = 0.03;
+  const config::CaseFile ws = config::with_overrides(slice, s);
+  EXPECT_EQ(config::resolved_value(ws, "dem.drum.speed_rpm"), "150");
+  EXPECT_EQ(config::resolved_value(ws, slice.dem->scene.slice.enabled ? "dem.slice.target_mass_flow" : "dem.feeder.mass_flow"),
+            "0.03");
+}
