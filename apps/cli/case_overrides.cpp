@@ -11,17 +11,6 @@
 
 namespace centrec::cli {
 
-// A value as flags_text and override_args write it: the shortest text (at least 6
-// significant digits) that reads back as v, so a child process gets the value itself.
-std::string shortest_text(double v) {
-  char b[40];
-  for (int digits = 6; digits <= 17; ++digits) {
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    if (std::strtod(b, nullptr) == v) break;
-  }
-  return b;
-}
-
 namespace {
 
 // One override flag. It sets a case key (`key`), or the operating point (`point`: the

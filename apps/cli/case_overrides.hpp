@@ -27,8 +27,8 @@ std::vector<std::string> override_flag_names();
 // The case keys that `command`'s own flags set ("dem.run.threads", ...; --set's aside).
 std::vector<std::string> override_keys(const std::string& command);
 
-// The shortest text (at least 6 significant digits) that reads back as v.
-std::string shortest_text(double v);
+// A value as flags_text and override_args write it (config/case_file.hpp).
+using config::shortest_text;
 
 // "--threads 2 --set thermal.T_in=900": the overrides as `command` takes them (override_args).
 std::string flags_text(const config::Overrides& o, const std::string& command);

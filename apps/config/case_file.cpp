@@ -97,19 +97,14 @@ CaseFile read_case_recording(const std::string& text, const std::string& path, s
   return read_case(root, path);
 }
 
-namespace {
-
-// The shortest decimal text that reads back to the same double.
-std::string round_trip_text(double v) {
-  char buf[40];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    if (std::strtod(buf, nullptr) == v) break;
+std::string shortest_text(double v) {
+  char b[40];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    if (std::strtod(b, nullptr) == v) break;
   }
-  return buf;
+  return b;
 }
-
-}  // namespace
 
 CaseFile with_overrides(const CaseFile& cf, const Overrides& o) {
   if (o.keys.empty() && !o.any_operating_point()) return cf;
@@ -118,13 +113,13 @@ CaseFile with_overrides(const CaseFile& cf, const Overrides& o) {
   // same values), so the resolved case records the point that ran: the receiver's, or
   // without one the DEM drum's speed and its feed or slice target.
   if (o.any_operating_point() && cf.receiver) {
-    if (o.speed_rpm) root["receiver"]["speed_rpm"] = round_trip_text(*o.speed_rpm);
-    if (o.mass_flow) root["receiver"]["mass_flow"] = round_trip_text(*o.mass_flow);
+    if (o.speed_rpm) root["receiver"]["speed_rpm"] = shortest_text(*o.speed_rpm);
+    if (o.mass_flow) root["receiver"]["mass_flow"] = shortest_text(*o.mass_flow);
   } else if (o.any_operating_point() && cf.dem) {
-    if (o.speed_rpm) root["dem"]["drum"]["speed_rpm"] = round_trip_text(*o.speed_rpm);
+    if (o.speed_rpm) root["dem"]["drum"]["speed_rpm"] = shortest_text(*o.speed_rpm);
     if (o.mass_flow)
       root["dem"][cf.dem->scene.slice.enabled ? "slice" : "feeder"]
-          [cf.dem->scene.slice.enabled ? "target_mass_flow" : "mass_flow"] = round_trip_text(*o.mass_flow);
+          [cf.dem->scene.slice.enabled ? "target_mass_flow" : "mass_flow"] = shortest_text(*o.mass_flow);
   }
   for (const auto& [key, value] : o.keys) {
     const std::vector<std::string> parts = key_path_parts(key);

@@ -47,4 +47,8 @@ CaseFile with_overrides(const CaseFile& cf, const Overrides& o);
 // the configuration does not hold it).
 std::string resolved_value(const CaseFile& cf, const std::string& dotted);
 
+// The shortest decimal text (at least 6 significant digits) that reads back as v: how a
+// command-line value is written into a resolved case and into a child process's arguments.
+std::string shortest_text(double v);
+
 }  // namespace centrec::config
