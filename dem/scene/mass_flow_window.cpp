@@ -7,11 +7,14 @@
 namespace centrec::dem::scene {
 
 namespace {
-// Index of the latest sample at least `window` before the last (0 if the log is shorter).
-std::size_t window_start(const std::vector<MassFlowSample>& log, double window) {
-  std::size_t k = log.size() - 1;
-  while (k > 0 && log.back().time - log[k].time < window) --k;
+// Index of the latest sample at least `window` before sample `end` (0 if the log is shorter).
+std::size_t window_start(const std::vector<MassFlowSample>& log, double window, std::size_t end) {
+  std::size_t k = end;
+  while (k > 0 && log[end].time - log[k].time < window) --k;
   return k;
+}
+std::size_t window_start(const std::vector<MassFlowSample>& log, double window) {
+  return window_start(log, window, log.size() - 1);
 }
 
 // Mean of the slice's instantaneous axial flow over samples (from, to].
@@ -56,15 +59,36 @@ FlowSteadiness flow_steadiness(const std::vector<MassFlowSample>& log, const Sce
   }
   if (s.target > 0.0) s.flow_error = s.measured / s.target - 1.0;
   s.steady = std::abs(s.flow_error) <= tolerance && std::abs(s.holdup_drift) <= tolerance;
+  if (!s.slice) {
+    // A fed drum fills in a wave: its outflow rises through the feed towards an overshoot,
+    // and one window astride the crossing averages to the feed with its holdup back where it
+    // began. The window before must be steady too (docs/centrec_scene.md "Steady state").
+    s.previous_flow_error = s.previous_holdup_drift = std::numeric_limits<double>::infinity();
+    const std::size_t k1 = window_start(log, window), k0 = window_start(log, window, k1);
+    const double dt = log[k1].time - log[k0].time;
+    if (dt >= window * (1.0 - 1e-9)) {
+      const double fed = (log[k1].fed - log[k0].fed) / dt, out = (log[k1].out - log[k0].out) / dt;
+      if (fed > 0.0) s.previous_flow_error = out / fed - 1.0;
+      if (log[k0].holdup > 0.0) s.previous_holdup_drift = log[k1].holdup / log[k0].holdup - 1.0;
+    }
+    s.steady = s.steady && std::abs(s.previous_flow_error) <= tolerance &&
+               std::abs(s.previous_holdup_drift) <= tolerance;
+  }
   return s;
 }
 
 std::string FlowSteadiness::describe() const {
-  char line[200], error[40] = "no flow yet to compare";  // a window before the first feed or target
+  char line[300], error[40] = "no flow yet to compare";  // a window before the first feed or target
   if (target > 0.0) std::snprintf(error, sizeof error, "%+.1f %%", 100.0 * flow_error);
-  std::snprintf(line, sizeof line, "%s %.4g vs %s %.4g g/s (%s), holdup %+.1f %% over %.3g s: %s",
+  char before[80] = "";
+  if (!slice && std::isfinite(previous_flow_error))
+    std::snprintf(before, sizeof before, "; the window before: %+.1f %%, holdup %+.1f %%", 100.0 * previous_flow_error,
+                  100.0 * previous_holdup_drift);
+  else if (!slice)
+    std::snprintf(before, sizeof before, "; no window before it yet");
+  std::snprintf(line, sizeof line, "%s %.4g vs %s %.4g g/s (%s), holdup %+.1f %% over %.3g s%s: %s",
                 slice ? "axial flow" : "outlet", measured * 1e3, slice ? "target" : "feed", target * 1e3, error,
-                100.0 * holdup_drift, window, steady ? "steady" : "NOT steady");
+                100.0 * holdup_drift, window, before, steady ? "steady" : "NOT steady");
   return line;
 }
 

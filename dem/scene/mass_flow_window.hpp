@@ -22,7 +22,9 @@ struct WindowFlows {
 WindowFlows window_flows(const std::vector<MassFlowSample>& log, double window);
 
 // Steady flow over the window:
-//  - a fed drum: the outlet within `tolerance` of the feed, |out / fed - 1| <= tolerance;
+//  - a fed drum: the outlet within `tolerance` of the feed, |out / fed - 1| <= tolerance, in
+//    the window and in the window before it (a filling wave's outflow crosses the feed: one
+//    window astride the crossing averages to the feed);
 //  - a slice with a flow controller: its axial flow within `tolerance` of the target;
 //    a slice without one: the window's two halves agree within `tolerance`;
 //  - and in both, the holdup drifted by at most `tolerance` of itself over the window
@@ -32,6 +34,7 @@ struct FlowSteadiness {
   double target = 0.0;        // kg/s: the feed (drum), the controller's target or the first half (slice)
   double flow_error = 0.0;    // measured / target - 1 (infinite without a target)
   double holdup_drift = 0.0;  // holdup_end / holdup_start - 1
+  double previous_flow_error = 0.0, previous_holdup_drift = 0.0;  // a fed drum's window before (infinite: none)
   double window = 0.0;        // s
   bool steady = false;
   bool slice = false;

@@ -47,6 +47,51 @@ TEST(FlowSteadiness, FedDrum) {
   EXPECT_FALSE(flow_steadiness({MassFlowSample{}}, drum, 0.5, 0.05).steady);
 }
 
+TEST(FlowSteadiness, AFedDrumsFillingWaveCrossingTheFeedIsNotSteady) {
+  // A fed drum fills in a wave: its outflow rises through the feed on its way to an
+  // overshoot. Over one window astride the crossing (here the outlet ramps 5 -> 15 g/s about
+  // a 10 g/s feed) the mean outflow is the feed and the holdup ends where it began, which a
+  // one-window test calls steady (the D/d 100 drum's spin-up ended so at a wave's crest); the
+  // window before (outlet 5 g/s) is not, so the drum is not.
+  SceneConfig drum;
+  drum.feeder.mass_flow = 0.01;
+  std::vector<MassFlowSample> log;
+  double out = 0.0, holdup = 0.05;
+  for (int k = 0; k <= 100; ++k) {
+    const double t = 0.01 * k, rate = t < 0.5 ? 0.005 : 0.005 + 0.02 * (t - 0.5);
+    if (k > 0) {
+      const double prev = log.back().time < 0.5 ? 0.005 : 0.005 + 0.02 * (log.back().time - 0.5);
+      out += 0.5 * (rate + prev) * 0.01;
+      holdup += 0.01 * 0.01 - 0.5 * (rate + prev) * 0.01;
+    }
+    MassFlowSample s;
+    s.time = t, s.fed = 0.01 * t, s.out = out, s.holdup = holdup;
+    log.push_back(s);
+  }
+  const auto crossing = flow_steadiness(log, drum, 0.5, 0.05);
+  std::printf("%s\n", crossing.describe().c_str());
+  EXPECT_NEAR(crossing.flow_error, 0.0, 1e-9);     // the last window alone: the feed's
+  EXPECT_NEAR(crossing.holdup_drift, 0.0, 1e-9);   // and a flat holdup
+  EXPECT_NEAR(crossing.previous_flow_error, -0.5, 1e-9);
+  EXPECT_FALSE(crossing.steady);
+  // A steady drum whose outflow scatters +-8 % from one tenth of a second to the next is steady.
+  std::vector<MassFlowSample> noisy;
+  out = 0.0;
+  for (int k = 0; k <= 100; ++k) {
+    MassFlowSample s;
+    s.time = 0.01 * k;
+    if (k > 0) out += 0.01 * 0.01 * ((k / 10) % 2 ? 1.08 : 0.92);
+    s.fed = 0.01 * s.time, s.out = out, s.holdup = 0.05 + s.fed - s.out;
+    noisy.push_back(s);
+  }
+  const auto steady = flow_steadiness(noisy, drum, 0.5, 0.05);
+  std::printf("%s\n", steady.describe().c_str());
+  EXPECT_TRUE(steady.steady);
+  // A log shorter than two windows cannot show it.
+  noisy.resize(60);
+  EXPECT_FALSE(flow_steadiness(noisy, drum, 0.5, 0.05).steady);
+}
+
 TEST(FlowSteadiness, ControlledAndFreeSlice) {
   SceneConfig slice;
   slice.slice.enabled = true;
