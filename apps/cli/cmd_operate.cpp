@@ -273,9 +273,20 @@ int cmd_operate(const Args& args) {
   // 5. The full coupled run at the answer, and secant steps in the mass flow while it misses.
   if (check && a.best >= 0) {
     const auto& b = a.candidates[a.best];
+    // The surrogate's dT_out/dmdot at the answer: central, or one-sided inward where the
+    // extrapolated surrogate has no film on one side (the answer on the map's flow edge).
     const double dm = 0.01 * b.mass_flow;
-    const double slope = (thermal.at(b.speed_rpm, b.mass_flow + dm).T_out -
-                          thermal.at(b.speed_rpm, b.mass_flow - dm).T_out) / (2.0 * dm);
+    auto T_at = [&](double m) {
+      try {
+        return thermal.at(b.speed_rpm, m).T_out;
+      } catch (const std::exception&) {
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+    };
+    const double T_hi = T_at(b.mass_flow + dm), T_lo = T_at(b.mass_flow - dm);
+    const double slope = !std::isnan(T_hi) && !std::isnan(T_lo) ? (T_hi - T_lo) / (2.0 * dm)
+                         : !std::isnan(T_hi)                    ? (T_hi - b.answer.T_out) / dm
+                                                                : (b.answer.T_out - T_lo) / dm;
     int failed = 0;
     std::vector<nlohmann::json> runs_made;
     auto full_T_out = [&](double mdot) {
