@@ -28,6 +28,15 @@ double film_balance_scale(const FilmBalance& b) {
   return largest_magnitude({b.absorbed, b.emitted, b.convected, b.wall, b.carried, b.inlet_conduction, b.storage});
 }
 
+double FilmOperator::stored_enthalpy(const double* y) const {
+  const double h_in = model_.heat.enthalpy(model_.T_in);
+  double H = 0.0;
+  for (long p = 0; p < size(); ++p)
+    H += model_.material.rho_s * grid_.phi[p] * grid_.volume(static_cast<int>(p) / grid_.nxi) *
+         (model_.heat.enthalpy(y[p]) - h_in);
+  return H * grid_.perimeter;
+}
+
 FilmBalance FilmOperator::balance(double t, const double* y) {
   const FilmGrid& g = grid_;
   const int nxi = g.nxi, nz = g.nz;

@@ -120,6 +120,10 @@ class FilmOperator : public OdeSystem {
 
   FilmBalance balance(double t, const double* y);
   ThermalFields fields(double t, const double* y);
+  // The film's enthalpy above the inlet state, sum of rho_s phi V (h(T) - h(T_in)) over the
+  // cells, whole circumference (J): what a change of the film's geometry at fixed cell
+  // temperatures creates or destroys (thermal/outlet_controller.hpp).
+  double stored_enthalpy(const double* y) const;
   std::vector<KeffSection> keff_sections(const double* y) const;
 
   const FilmGrid& grid() const { return grid_; }

@@ -72,9 +72,16 @@ ControlledTransientResult run_controlled_transient(FilmOperator& op, const std::
     if (b > 0.0 && b < s.t_end) kinks.push_back(b);
   double m_cmd = s.control ? 1.0 : s.m_fixed;
   double integral = 0.0;  // of e over time, K s
-  op.set_flow_time(lag(1.0, m_cmd, 0.0, s.tau_film));
+  // The film the plant runs on: op, or the one film_at gave for the flow factor m_film; its
+  // own flow factor is the applied one over m_film. The lag in absolute flow factors.
+  FilmOperator* film = &op;
+  std::unique_ptr<FilmOperator> owned;
+  double m_film = 1.0, lag_from = 1.0, lag_to = m_cmd, lag_t0 = 0.0;
+  auto apply_lag = [&] { film->set_flow_time(lag(lag_from / m_film, lag_to / m_film, lag_t0, s.tau_film)); };
+  apply_lag();
   std::vector<double> y = y0;
-  CvodeIntegrator cv(op, s.integrator, 0.0, y);
+  auto cv = std::make_unique<CvodeIntegrator>(*film, s.integrator, 0.0, y);
+  SolverStats earlier;  // of the integrators of earlier films
   std::size_t next_kink = 0;
   // Control instants k dt_control, the last one t_end (a shorter interval if it is no multiple).
   const long n = std::max(1L, static_cast<long>(std::ceil(s.t_end / s.dt_control - 1e-9)));
@@ -82,14 +89,14 @@ ControlledTransientResult run_controlled_transient(FilmOperator& op, const std::
     const double t = k == n ? s.t_end : k * s.dt_control;
     while (next_kink < kinks.size() && kinks[next_kink] <= t) {
       const double tk = kinks[next_kink++];
-      if (tk > cv.time()) {
-        cv.advance(tk, y);
-        cv.reinit(tk, y);
+      if (tk > cv->time()) {
+        cv->advance(tk, y);
+        cv->reinit(tk, y);
       }
     }
-    cv.advance(t, y);
-    const FilmBalance b = op.balance(t, y.data());
-    const double m = op.model().flow_time.at(t);
+    cv->advance(t, y);
+    const FilmBalance b = film->balance(t, y.data());
+    const double m = m_film * film->model().flow_time.at(t);
     if (s.control) {
       const double e = b.T_out - r.T_set;
       const double trial = integral + e * s.dt_control;
@@ -100,8 +107,7 @@ ControlledTransientResult run_controlled_transient(FilmOperator& op, const std::
       const bool winding = (u > s.m_max && e > 0.0) || (u < s.m_min && e < 0.0);
       if (!winding) integral = trial;
       m_cmd = std::clamp(base + r.kp * e + r.ki * integral, s.m_min, s.m_max);
-      op.set_flow_time(lag(m, m_cmd, t, s.tau_film));
-      cv.reinit(t, y);  // u's slope changes here
+      lag_from = m, lag_to = m_cmd, lag_t0 = t;
     }
     ControlSample c;
     c.t = t;
@@ -110,13 +116,36 @@ ControlledTransientResult run_controlled_transient(FilmOperator& op, const std::
     c.m = m;
     c.mass_flow = b.mass_flow;
     c.T_out = b.T_out;
-    const ThermalFields f = op.fields(t, y.data());
+    const ThermalFields f = film->fields(t, y.data());
     c.T_surface_max = *std::max_element(f.T_surface.begin(), f.T_surface.end());
     c.efficiency = b.efficiency;
     r.samples.push_back(c);
+    // The film of the flow applied now, its temperatures kept cell by cell.
+    if (s.film_at && k < n && std::abs(m / m_film - 1.0) > s.refilm_step) {
+      std::unique_ptr<FilmOperator> next = s.film_at(m);
+      if (!next || next->size() != film->size())
+        throw std::invalid_argument("controlled transient: film_at gave no film, or one on another grid");
+      next->set_flux_time(op.model().flux_time);
+      next->freeze_inputs(false);
+      const double before = film->stored_enthalpy(y.data()), after = next->stored_enthalpy(y.data());
+      r.refilm_enthalpy += after - before;
+      r.refilm_enthalpy_abs += std::abs(after - before);
+      ++r.refilms;
+      earlier += cv->stats();
+      cv.reset();
+      owned = std::move(next);
+      film = owned.get();
+      m_film = m;
+      apply_lag();
+      cv = std::make_unique<CvodeIntegrator>(*film, s.integrator, t, y);
+    } else if (s.control) {
+      apply_lag();
+      cv->reinit(t, y);  // u's slope changes here
+    }
   }
   r.y_end = y;
-  r.stats = cv.stats();
+  r.stats = earlier;
+  r.stats += cv->stats();
   return r;
 }
 

@@ -11,6 +11,15 @@
 // thicker film are not represented. Valid near the DEM's operating point (m near 1); far from it
 // T_out(m) and the tuned gains are approximations.
 //
+// With `film_at` (the film surrogate of an operating map, docs/operating.md), the film follows
+// its flow instead: whenever the applied flow factor has moved by more than refilm_step from
+// the film's, the plant takes the film the surrogate gives at that flow (its thickness,
+// velocity, solid fraction and dispersion; the residence time then falls as the real film's
+// does), with the cell temperatures kept at the same (z, xi = eta / t). That is not
+// conservative: a thicker film holds more mass at the temperatures of the old one, where the
+// real film's added mass enters at T_in. The enthalpy this creates or destroys (stored_enthalpy
+// before and after, summed) is reported with the result, so the forcing is measured.
+//
 // The film follows the command with a first-order lag: m' = (m_cmd - m) / tau_film, tau_film the
 // fed drum's holdup response time (a parameter here: a film whose flow grows as holdup^p,
 // p ~ 2.5 to 3, answers a feed step with tau = holdup / (p mdot), a third to a half of the
@@ -44,7 +53,9 @@
 // added to the delay, theta_eff = theta + dt_control / 2, and the closed-loop time constant
 // tau_c = theta_eff (SIMC's "tight but robust" choice: gain margin ~3, phase margin ~47 deg):
 //   kp = tau_1 / (|K| (tau_c + theta_eff)),  tau_I = min(tau_1, 4 (tau_c + theta_eff)),  ki = kp / tau_I.
+#include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "cvode_integrator.hpp"
@@ -67,6 +78,10 @@ struct ControlledTransientSettings {
   // The PI then corrects around m_ff = (f - (1 - eta)) / eta instead of around 1 (below).
   double feedforward_efficiency = std::numeric_limits<double>::quiet_NaN();
   IntegratorSettings integrator;
+  // The film at flow factor m (relative to the initial flow), carrying that flow, on the same
+  // grid (above). Empty: the film keeps its geometry and m scales its mass fluxes.
+  std::function<std::unique_ptr<FilmOperator>(double m)> film_at;
+  double refilm_step = 0.02;  // a new film once the applied flow has moved this fraction from the film's
 };
 
 // One sample per control instant t = k dt_control (and t_end).
@@ -86,6 +101,10 @@ struct ControlledTransientResult {
   double T_set = 0.0, kp = 0.0, ki = 0.0;  // as used (K, 1/K, 1/(K s))
   std::vector<double> y_end;
   SolverStats stats;
+  // With film_at: the films taken after the first, and the film enthalpy their changes created
+  // (net, and the sum of magnitudes), J.
+  int refilms = 0;
+  double refilm_enthalpy = 0.0, refilm_enthalpy_abs = 0.0;
 };
 
 // Integrates the film from y0 (normally the steady state at flow factor 1) to s.t_end with the

@@ -360,7 +360,9 @@ int cmd_operate(const Args& args) {
     st.tau_film = film_response;
     st.m_min = turndown;
     const auto t1 = std::chrono::steady_clock::now();
-    const runs::CloudResponse cr = runs::cloud_response(thermal, b.speed_rpm, b.mass_flow, flux, st);
+    // The film follows the surrogate over the map's mass flows (beyond them, the nearest's film).
+    const runs::CloudResponse cr =
+        runs::cloud_response(thermal, b.speed_rpm, b.mass_flow, flux, st, {map.flows.front(), map.flows.back()});
     const double tau = std::isnan(film_response) ? cr.residence_time / 3.0 : film_response;
     std::printf("flux history %s at the operating point (%.0f s; film residence time %.2f s, response time %.2f s%s, "
                 "turndown %.2f):\n  PI tuned on the film's step response: gain %.1f K per unit flow, dead time %.2f s, "
@@ -401,7 +403,21 @@ int cmd_operate(const Args& args) {
       j["transient"][name] = {{"peak_deviation_K", peak},
                               {"seconds_outside_15K", outside},
                               {"lowest_mass_flow_kg_s", m_low},
-                              {"peak_surface_K", surface}};
+                              {"peak_surface_K", surface},
+                              {"films_taken", r->refilms},
+                              {"film_change_enthalpy_J", r->refilm_enthalpy},
+                              {"film_change_enthalpy_abs_J", r->refilm_enthalpy_abs}};
+    }
+    if (cr.film_follows) {
+      std::printf("  the film followed the surrogate (%.4g-%.4g kg/s; beyond, the nearest mapped flow's film): films "
+                  "taken held / PI / PI+FF %d / %d / %d; enthalpy their changes created %+.3g / %+.3g / %+.3g kJ "
+                  "(magnitudes %.3g / %.3g / %.3g kJ; the film holds %.3g kJ above the inlet)\n",
+                  map.flows.front(), map.flows.back(), cr.fixed.refilms, cr.pi.refilms, cr.feedforward.refilms,
+                  cr.fixed.refilm_enthalpy / 1e3, cr.pi.refilm_enthalpy / 1e3, cr.feedforward.refilm_enthalpy / 1e3,
+                  cr.fixed.refilm_enthalpy_abs / 1e3, cr.pi.refilm_enthalpy_abs / 1e3,
+                  cr.feedforward.refilm_enthalpy_abs / 1e3, cr.film_enthalpy / 1e3);
+      j["transient"]["film_follows_surrogate"] = true;
+      j["transient"]["film_enthalpy_J"] = cr.film_enthalpy;
     }
     j["transient"]["flux_file"] = transient_csv;
     j["transient"]["residence_time_s"] = cr.residence_time;

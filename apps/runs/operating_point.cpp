@@ -1,5 +1,6 @@
 #include "operating_point.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -22,6 +23,10 @@ SurrogateThermal::Answer SurrogateThermal::at(double speed_rpm, double mass_flow
 
 config::ThermalCase SurrogateThermal::case_at(double speed_rpm, double mass_flow) const {
   return on_film_case(surrogate_.film_at(speed_rpm, mass_flow), mass_flow, nullptr);
+}
+
+config::ThermalCase SurrogateThermal::case_at(double speed_rpm, double mass_flow, double film_mass_flow) const {
+  return on_film_case(surrogate_.film_at(speed_rpm, film_mass_flow), mass_flow, nullptr);
 }
 
 config::ThermalCase SurrogateThermal::on_film_case(thermal::FilmField film, double mass_flow,
@@ -202,13 +207,23 @@ CheckRefinement refine_by_full_runs(double target, double mass_flow, double surr
 namespace centrec::runs {
 
 CloudResponse cloud_response(const SurrogateThermal& th, double speed_rpm, double mass_flow,
-                             const thermal::TimeFactor& flux, thermal::ControlledTransientSettings s) {
+                             const thermal::TimeFactor& flux, thermal::ControlledTransientSettings s,
+                             std::pair<double, double> film_flows) {
   ThermalRun r = run_thermal_case(th.case_at(speed_rpm, mass_flow), false);
+  if (film_flows.first < film_flows.second)
+    s.film_at = [&th, speed_rpm, mass_flow, film_flows](double m) {
+      const double carried = m * mass_flow;
+      const config::ThermalCase c =
+          th.case_at(speed_rpm, carried, std::clamp(carried, film_flows.first, film_flows.second));
+      return std::make_unique<thermal::FilmOperator>(c.film, c.model, c.grid);
+    };
   thermal::FilmOperator& op = *r.op;
   const std::vector<double>& y0 = r.steady.y;
   CloudResponse out;
   out.residence_time = op.time_scale();
   out.efficiency = r.balance.efficiency;
+  out.film_enthalpy = op.stored_enthalpy(y0.data());
+  out.film_follows = static_cast<bool>(s.film_at);
   if (std::isnan(s.tau_film)) s.tau_film = out.residence_time / 3.0;
   // The gains from the step response at the steady flux; then the cloud.
   out.tuning = thermal::tune_outlet_controller(op, y0, s);

@@ -30,6 +30,9 @@ class SurrogateThermal {
   Answer at(double speed_rpm, double mass_flow) const;
   // The thermal case at (speed, mass flow): the surrogate's film, its flow imposed.
   config::ThermalCase case_at(double speed_rpm, double mass_flow) const;
+  // The surrogate's film at film_mass_flow carrying mass_flow (a flow off the map's: the
+  // film of the nearest mapped flow).
+  config::ThermalCase case_at(double speed_rpm, double mass_flow, double film_mass_flow) const;
   // The same thermal model on a given film (a map point's own, to check the surrogate's).
   Answer on_film(thermal::FilmField film, double mass_flow) const;
 
@@ -105,8 +108,14 @@ struct CloudResponse {
   thermal::OutletTuning tuning;
   double residence_time = 0.0;  // s, the film's holdup / mass flow at the operating point
   double efficiency = 0.0;      // steady, at the operating point (the feedforward's eta)
+  double film_enthalpy = 0.0;   // J, the film's enthalpy above the inlet state at the operating point
+  bool film_follows = false;    // the film followed the surrogate (film_flows given)
 };
+// The film follows the surrogate (thermal/outlet_controller.hpp, film_at) within the map's
+// mass flows `film_flows` (kg/s, lo < hi; outside them the film of the nearest, its velocity
+// scaled); film_flows lo >= hi: the film keeps the operating point's geometry.
 CloudResponse cloud_response(const SurrogateThermal& th, double speed_rpm, double mass_flow,
-                             const thermal::TimeFactor& flux, thermal::ControlledTransientSettings s);
+                             const thermal::TimeFactor& flux, thermal::ControlledTransientSettings s,
+                             std::pair<double, double> film_flows = {0.0, 0.0});
 
 }  // namespace centrec::runs

@@ -10,9 +10,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 
 #include "film_test_cases.hpp"
+#include "thermal/analytic_film.hpp"
 #include "thermal/film_operator.hpp"
 #include "thermal/outlet_controller.hpp"
 #include "thermal/steady_state.hpp"
@@ -309,4 +311,86 @@ TEST(OutletController, FeedforwardFromTheFluxHoldsTheShippedCloudCloser) {
               (0.3 - (1.0 - b0.efficiency)) / b0.efficiency);
   EXPECT_LT(peak_ff, 0.5 * peak_pi);
   EXPECT_NEAR(ff.samples.back().T_out, ff.T_set, 1.0);
+}
+
+namespace {
+// The analytic film at flow factor m of a film that thickens with its flow as a fed drum's
+// does (t ~ m^0.4, the rest of the flow carried by a faster surface), carrying m times the
+// initial flow; with `same_geometry` only the velocity scales (what the flow factor does).
+std::unique_ptr<FilmOperator> film_at_flow(double m, const FilmModel& model, bool same_geometry) {
+  AnalyticFilm a = centrec_film();
+  const double rho_s = model.material.rho_s;
+  const double mdot0 = film_mass_flow(analytic_film(a), rho_s, 0.5);
+  if (!same_geometry) a.thickness *= std::pow(m, 0.4);
+  FilmField f = analytic_film(a);
+  const double scale = m * mdot0 / film_mass_flow(f, rho_s, 0.5);
+  for (double& u : f.u) u *= scale;
+  return std::make_unique<FilmOperator>(f, model, small_grid());
+}
+}  // namespace
+
+TEST(OutletController, AFilmTakenAtEachFlowWithTheSameGeometryChangesNothing) {
+  // film_at giving the same film with its velocity scaled is what the flow factor does: the
+  // controlled cloud is the same series, and no enthalpy is created.
+  FilmModel m = centrec_model();
+  m.flux_time = pulse_cloud();
+  FilmOperator op(analytic_film(centrec_film()), m, small_grid());
+  const std::vector<double> y0 = steady(op);
+  ControlledTransientSettings s;
+  s.t_end = 150.0;
+  const ControlledTransientResult plain = run_controlled_transient(op, y0, s);
+  s.kp = plain.kp;
+  s.ki = plain.ki;
+  s.film_at = [&](double f) { return film_at_flow(f, m, true); };
+  const ControlledTransientResult refilmed = run_controlled_transient(op, y0, s);
+  double dT = 0.0, dm = 0.0;
+  for (std::size_t k = 0; k < plain.samples.size(); ++k) {
+    dT = std::max(dT, std::abs(plain.samples[k].T_out - refilmed.samples[k].T_out));
+    dm = std::max(dm, std::abs(plain.samples[k].m - refilmed.samples[k].m));
+  }
+  std::printf("pulse cloud, controlled: %d films taken; max |T_out difference| %.2e K (tolerance 0.01 K), max |m "
+              "difference| %.2e (tolerance 1e-4), film enthalpy created %.3g J\n",
+              refilmed.refilms, dT, dm, refilmed.refilm_enthalpy_abs);
+  ASSERT_EQ(plain.samples.size(), refilmed.samples.size());
+  EXPECT_GT(refilmed.refilms, 5);
+  EXPECT_LT(dT, 0.01);
+  EXPECT_LT(dm, 1e-4);
+  EXPECT_LT(refilmed.refilm_enthalpy_abs, 1e-9 * std::abs(op.stored_enthalpy(y0.data())));
+}
+
+TEST(OutletController, AFilmThatFollowsItsFlowSettlesToTheSteadyStateOfTheFilmAtTheNewFlow) {
+  // A flow step 1 -> 1.3 (open loop, through the film's 3 s lag) on a film that thickens with
+  // its flow: the transient ends at the steady state of the film at 1.3, not at that of the
+  // initial film run 1.3 times faster (which the test shows to differ), and the enthalpy the
+  // film changes created is reported.
+  const FilmModel m = centrec_model();
+  FilmOperator op(analytic_film(centrec_film()), m, small_grid());
+  const std::vector<double> y0 = steady(op);
+  ControlledTransientSettings s;
+  s.control = false;
+  s.m_fixed = 1.3;
+  s.t_end = 8.0 * (op.time_scale() + s.tau_film);
+  s.refilm_step = 1e-3;
+  s.film_at = [&](double f) { return film_at_flow(f, m, false); };
+  const ControlledTransientResult r = run_controlled_transient(op, y0, s);
+  auto steady_of = [](FilmOperator& o) {
+    const std::vector<double> y = steady(o);
+    return o.balance(0.0, y.data()).T_out;
+  };
+  const auto thick = film_at_flow(1.3, m, false);
+  const double T_thick = steady_of(*thick);
+  FilmModel faster = m;
+  faster.flow_time.level = 1.3;
+  const double T_faster = steady_T_out(faster);
+  const double absorbed = op.balance(0.0, y0.data()).absorbed * s.t_end;
+  std::printf("flow step 1 -> 1.3 over %.0f s: T_out %.3f -> %.3f K; steady T_out of the film at 1.3 %.3f K "
+              "(tolerance 0.05 K), of the initial film run 1.3 times faster %.3f K; %d films taken, enthalpy "
+              "created %+.4g J (sum of magnitudes %.4g J, %.2e of the energy absorbed over the run)\n",
+              s.t_end, r.samples.front().T_out, r.samples.back().T_out, T_thick, T_faster, r.refilms,
+              r.refilm_enthalpy, r.refilm_enthalpy_abs, r.refilm_enthalpy_abs / absorbed);
+  EXPECT_NEAR(r.samples.back().T_out, T_thick, 0.05);
+  EXPECT_GT(std::abs(T_thick - T_faster), 0.5);  // the two plants differ: the test can tell them apart
+  EXPECT_GT(r.refilms, 3);
+  EXPECT_GT(r.refilm_enthalpy, 0.0);  // a thicker film at the old temperatures: enthalpy created
+  EXPECT_NEAR(r.samples.back().mass_flow / r.samples.front().mass_flow, 1.3, 1e-3);
 }
