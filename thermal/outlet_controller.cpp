@@ -118,6 +118,7 @@ ControlledTransientResult run_controlled_transient(FilmOperator& op, const std::
     c.T_out = b.T_out;
     const ThermalFields f = film->fields(t, y.data());
     c.T_surface_max = *std::max_element(f.T_surface.begin(), f.T_surface.end());
+    c.T_max = *std::max_element(y.begin(), y.end());
     c.efficiency = b.efficiency;
     r.samples.push_back(c);
     // The film of the flow applied now, its temperatures kept cell by cell.

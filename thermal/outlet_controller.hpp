@@ -93,6 +93,7 @@ struct ControlSample {
   double mass_flow = 0.0;      // kg/s (m times the initial mass flow)
   double T_out = 0.0;          // mixing-cup outlet temperature, K
   double T_surface_max = 0.0;  // K
+  double T_max = 0.0;          // K: the film's hottest cell
   double efficiency = 0.0;     // carried / aperture power (NaN without sunlight)
 };
 

@@ -30,6 +30,7 @@ nlohmann::json answer_json(const runs::SurrogateThermal::Answer& a) {
   return {{"T_out_K", a.T_out},
           {"efficiency", a.efficiency},
           {"T_surface_max_K", a.T_surface_max},
+          {"T_max_K", a.T_max},
           {"film_thickness_d", a.thickness_d},
           {"velocity_factor", a.velocity_factor}};
 }
@@ -226,9 +227,10 @@ int cmd_operate(const Args& args) {
   } else {
     const auto& b = a.candidates[a.best];
     std::printf(
-        "operating point: %.3f rpm, %.5f kg/s -> T_out %.2f K, efficiency %.4f, film %.2f d, peak surface %.1f K\n"
+        "operating point: %.3f rpm, %.5f kg/s -> T_out %.2f K, efficiency %.4f, film %.2f d, peak surface %.1f K, "
+        "hottest particles %.1f K\n"
         "  margin to the window: speed -%.3f / +%.3f rpm, mass flow -%.5f / +%.5f kg/s\n",
-        b.speed_rpm, b.mass_flow, b.answer.T_out, b.answer.efficiency, b.answer.thickness_d, b.answer.T_surface_max,
+        b.speed_rpm, b.mass_flow, b.answer.T_out, b.answer.efficiency, b.answer.thickness_d, b.answer.T_surface_max, b.answer.T_max,
         b.margin.speed_below, b.margin.speed_above, b.margin.flow_below, b.margin.flow_above);
     j["operating_point"] = {{"speed_rpm", b.speed_rpm}, {"mass_flow_kg_s", b.mass_flow}};
     j["operating_point"].update(answer_json(b.answer));
@@ -376,34 +378,36 @@ int cmd_operate(const Args& args) {
     std::ostringstream csv;
     csv << "t_s,flux_factor";
     for (const char* m : {"fixed", "pi", "feedforward"})
-      csv << ',' << m << "_mass_flow_kg_s," << m << "_T_out_K," << m << "_T_surface_max_K";
+      csv << ',' << m << "_mass_flow_kg_s," << m << "_T_out_K," << m << "_T_surface_max_K," << m << "_T_max_K";
     csv << '\n';
     for (std::size_t k = 0; k < cr.fixed.samples.size(); ++k) {
       csv << shortest_text(cr.fixed.samples[k].t) << ',' << shortest_text(cr.fixed.samples[k].flux_factor);
       for (const auto& [name, r] : modes) {
         const auto& c = r->samples[k];
         csv << ',' << shortest_text(c.mass_flow) << ',' << shortest_text(c.T_out) << ','
-            << shortest_text(c.T_surface_max);
+            << shortest_text(c.T_surface_max) << ',' << shortest_text(c.T_max);
       }
       csv << '\n';
     }
     io::write_text_atomically(out_dir + "/operate_transient.csv", csv.str());
     for (const auto& [name, r] : modes) {
-      double peak = 0.0, outside = 0.0, surface = 0.0, m_low = 1e300;
+      double peak = 0.0, outside = 0.0, surface = 0.0, hottest = 0.0, m_low = 1e300;
       for (std::size_t k = 0; k < r->samples.size(); ++k) {
         const auto& c = r->samples[k];
         peak = std::max(peak, std::abs(c.T_out - r->T_set));
         if (k > 0 && std::abs(c.T_out - r->T_set) > 15.0) outside += c.t - r->samples[k - 1].t;
         surface = std::max(surface, c.T_surface_max);
+        hottest = std::max(hottest, c.T_max);
         m_low = std::min(m_low, c.mass_flow);
       }
       std::printf("  %-22s peak |T_out - %.2f K| %7.2f K, %5.0f s outside +-15 K, lowest flow %.4g kg/s, peak "
-                  "surface %.1f K\n",
-                  name, r->T_set, peak, outside, m_low, surface);
+                  "surface %.1f K, hottest particles %.1f K\n",
+                  name, r->T_set, peak, outside, m_low, surface, hottest);
       j["transient"][name] = {{"peak_deviation_K", peak},
                               {"seconds_outside_15K", outside},
                               {"lowest_mass_flow_kg_s", m_low},
                               {"peak_surface_K", surface},
+                              {"peak_particle_K", hottest},
                               {"films_taken", r->refilms},
                               {"film_change_enthalpy_J", r->refilm_enthalpy},
                               {"film_change_enthalpy_abs_J", r->refilm_enthalpy_abs}};

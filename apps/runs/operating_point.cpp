@@ -48,6 +48,7 @@ SurrogateThermal::Answer SurrogateThermal::on_film(thermal::FilmField film, doub
   a.T_out = r.balance.T_out;
   a.efficiency = r.balance.efficiency;
   for (double T : r.fields.T_surface) a.T_surface_max = std::max(a.T_surface_max, T);
+  for (double T : r.steady.y) a.T_max = std::max(a.T_max, T);
   a.thickness_d = c.film.t[0] / c.film.particle_diameter;
   return a;
 }

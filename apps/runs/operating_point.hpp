@@ -23,6 +23,7 @@ class SurrogateThermal {
   SurrogateThermal(config::ThermalCase base, const coupling::FilmSurrogate& surrogate, double receiver_diameter);
   struct Answer {
     double T_out = 0.0, efficiency = 0.0, T_surface_max = 0.0;  // K, -, K
+    double T_max = 0.0;  // K: the film's hottest cell (particles beneath the radiating surface are hotter)
     double thickness_d = 0.0;                                   // film thickness in particle diameters
     double velocity_factor = 0.0;                               // imposed flow / the surrogate film's own
     double seconds = 0.0;                                       // wall time of the steady solve

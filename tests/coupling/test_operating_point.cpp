@@ -325,6 +325,8 @@ TEST(OperatingPoint, FindsAKnownPointOfASyntheticSurrogate) {
   EXPECT_DOUBLE_EQ(c.speed_rpm, 45.0);
   EXPECT_NEAR(c.mass_flow, 2.5, 2.5e-3);
   EXPECT_NEAR(c.answer.T_out, truth.T_out, 0.02);
+  // The hottest particles: no cooler than the outlet's mixing cup, a mean of the outlet's cells.
+  EXPECT_GE(c.answer.T_max, c.answer.T_out);
   // The best is the found candidate of highest efficiency, and inside the window.
   ASSERT_GE(a.best, 0);
   for (const auto& o : a.candidates)
@@ -469,6 +471,7 @@ TEST(OperateCli, AnswersFromASyntheticMapOfTheQuickstartReceiver) {
   // better than the held flow (the figures of docs/operating.md).
   const std::string series = read_text(out + "/operate_transient.csv");
   EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 202);
+  EXPECT_NE(series.find("feedforward_T_max_K"), std::string::npos);
   const auto& tr = j["transient"];
   EXPECT_LT(tr["PI + flux feedforward"]["peak_deviation_K"].get<double>(),
             tr["mass flow held"]["peak_deviation_K"].get<double>());
