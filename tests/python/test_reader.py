@@ -362,10 +362,12 @@ class OperateFolder(unittest.TestCase):
                 points.append({"dir": d, "status": 0, "speed_rpm": rpm, "mass_flow_kg_s": mdot,
                                "dem_flow_steady": True, "flow_closure": 1.0})
         axes = [{"key": "speed_rpm", "column": "speed_rpm"}, {"key": "mass_flow", "column": "mass_flow_kg_s"}]
-        with open(os.path.join(m, "sweep.json"), "w") as fh:
-            json.dump({"case": "small_coupled.yaml", "axes": axes, "points": points}, fh)
-        out = os.path.join(ARGS.work, "operate")
+        # The points hold films only (no summary.json), so operate learns the map's receiver
+        # from the case file sweep.json names, as centrec sweep writes it.
         case = os.path.join(ARGS.source, "tests", "coupling", "small_coupled.yaml")
+        with open(os.path.join(m, "sweep.json"), "w") as fh:
+            json.dump({"case": case, "axes": axes, "points": points}, fh)
+        out = os.path.join(ARGS.work, "operate")
         run_centrec(["operate", case, "--map", m, "--target-outlet", repr(cls.fixture_T_out), "--speeds", "2",
                      "--out", out, "--no-plots"], out + ".log")
         cls.op = centrec.load(out)
