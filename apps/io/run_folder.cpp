@@ -71,11 +71,12 @@ RunFolderClaim::RunFolderClaim(const std::string& dir, const std::string& comman
     in >> key >> pid;
     std::getline(in >> std::ws, owner_command);
     if (alive(pid)) {
-      lock_.clear();
+      const std::string held = lock_;
+      lock_.clear();  // not ours: the destructor leaves it
       throw std::invalid_argument(dir + " is in use by another centrec run (process " + std::to_string(pid) + ": " +
                                   owner_command.substr(owner_command.find(' ') + 1) +
                                   "): wait for it to end or give another --out (if process " + std::to_string(pid) +
-                                  " is no centrec run, remove " + lock_ + ")");
+                                  " is no centrec run, remove " + held + ")");
     }
     ::unlink(lock_.c_str());  // its process is gone (killed): the folder is judged by its files
   }

@@ -76,6 +76,8 @@ TEST(RunFolders, AFolderInUseIsRefusedEvenWithOverwriteAndAStaleLockIsTakenOver)
   EXPECT_NE(busy.exit_code, 0);
   EXPECT_NE(busy.err.find("in use by another centrec run"), std::string::npos);
   EXPECT_NE(busy.err.find("a_long_run.yaml"), std::string::npos);
+  // The message names the lock to remove if that process is no centrec run.
+  EXPECT_NE(busy.err.find("remove " + dir + "/.centrec-run.lock)"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir + "/summary.json"));
   // A lock whose process is gone (a run killed with -9): the folder is judged by its files.
   const pid_t gone = ::fork();
