@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <fstream>
 #include <stdexcept>
 #include <utility>
 
@@ -66,6 +67,17 @@ int run_child_jobs(std::vector<ChildJob>& jobs, int parallel, const std::functio
     }
   }
   return failed;
+}
+
+std::string failure_reason(const ChildJob& job) {
+  std::ifstream in(job.log);
+  std::string line, error, last;
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    last = line;
+    if (line.find("error: ") != std::string::npos) error = line;
+  }
+  return error.empty() ? last : error;
 }
 
 }  // namespace centrec::cli

@@ -21,4 +21,8 @@ std::string own_executable();
 int run_child_jobs(std::vector<ChildJob>& jobs, int parallel, const std::function<void(std::size_t)>& on_start,
                    const std::function<void(std::size_t)>& on_done);
 
+// Why a finished job failed, from its log: the last line naming an error ("...: error: ..."),
+// else the log's last non-empty line, else "". Lines are returned without their newline.
+std::string failure_reason(const ChildJob& job);
+
 }  // namespace centrec::cli

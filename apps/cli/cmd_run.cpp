@@ -55,7 +55,10 @@ void print_run_help(const CommandLine& app) {
       "--replicas N runs the whole chain N times, with DEM seeds dem.seed, dem.seed + 1, ...,\n"
       "into DIR/replica_<k>/ (as many at a time as there are threads, the threads shared out),\n"
       "and writes DIR/summary.json with the mean and standard deviation over the seeds of T_out,\n"
-      "efficiency, k_eff and its parts, film thickness and flux closure (\"replicas\").\n\n"
+      "efficiency, k_eff and its parts, film thickness and flux closure (\"replicas\"). A replica\n"
+      "that fails (its film refused, say) is named with its reason (\"replicas\": \"failed\", and a\n"
+      "warning); the spread is then over the others when two or more finished, and the exit\n"
+      "status is 1.\n\n"
       "Writes DIR/summary.json (outlet temperature, efficiency, k_eff and its parts, film\n"
       "thickness, mdot, scaling, wall time per stage), DIR/results.h5 (thermal fields, /film,\n"
       "/coupling), DIR/results.xmf (the temperature field for ParaView), DIR/film.h5 (the film\n"
@@ -125,24 +128,44 @@ int run_replicas(const CommandLine& app, const Args& args, const std::string& ca
                     : ("FAILED (exit " + std::to_string(jobs[k].status) + "), see " + jobs[k].log).c_str());
     std::fflush(stdout);
   });
-  if (failed) {
+  // A replica that failed (a seed whose film is refused, say) is named with its reason; the
+  // spread is then over the others, when there are two or more, and the exit status says so.
+  std::vector<nlohmann::json> summaries;
+  std::vector<std::uint64_t> done_seeds;
+  std::vector<std::string> done_dirs;
+  nlohmann::json failures = nlohmann::json::array();
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    if (jobs[k].status == 0) {
+      summaries.push_back(io::read_json_file(dirs[k] + "/summary.json"));
+      done_seeds.push_back(seeds[k]);
+      done_dirs.push_back(dirs[k]);
+    } else {
+      failures.push_back(
+          {{"seed", seeds[k]}, {"dir", dirs[k]}, {"exit", jobs[k].status}, {"reason", failure_reason(jobs[k])}});
+    }
+  }
+  if (failed)
     std::fprintf(stderr, "centrec run: %d of %d replicas failed; the others are in %s/replica_*\n", failed, replicas,
                  out_dir.c_str());
-    return 1;
+  if (summaries.size() < 2) return failed ? 1 : 0;
+  nlohmann::json s = runs::combine_replicas(summaries, done_seeds, done_dirs);
+  if (failed) {
+    s["replicas"]["failed"] = failures;
+    for (const auto& f : failures)
+      s["warnings"].push_back("replica of seed " + std::to_string(f["seed"].get<std::uint64_t>()) +
+                              " failed and is left out of the spread: " + f["reason"].get<std::string>());
   }
-  std::vector<nlohmann::json> summaries;
-  for (const auto& dir : dirs) summaries.push_back(io::read_json_file(dir + "/summary.json"));
-  nlohmann::json s = runs::combine_replicas(summaries, seeds, dirs);
   io::write_json_file(out_dir + "/summary.json", s);
-  std::printf("centrec run %s: mean +- standard deviation over %d DEM seeds (%s/summary.json \"replicas\")\n",
-              case_path.c_str(), replicas, out_dir.c_str());
+  std::printf("centrec run %s: mean +- standard deviation over %zu DEM seeds%s (%s/summary.json \"replicas\")\n",
+              case_path.c_str(), summaries.size(),
+              failed ? (" of " + std::to_string(replicas) + ": the failed ones left out").c_str() : "", out_dir.c_str());
   for (const runs::HeadlineFigure& fig : runs::headline_figures()) {
     const auto& f = s["replicas"]["figures"][fig.pointer];
     std::printf("  %-34s %.6g +- %.3g %s\n", fig.pointer.c_str() + 1, f["mean"].get<double>(), f["std"].get<double>(),
                 fig.unit == "-" ? "" : fig.unit.c_str());
   }
   for (const auto& w : s["warnings"]) std::printf("  WARNING: %s\n", w.get<std::string>().c_str());
-  return 0;
+  return failed ? 1 : 0;
 }
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <unistd.h>
 
 #include "runs/replica_summary.hpp"
 #include "tests/test_case_dir.hpp"
@@ -85,5 +86,41 @@ TEST(Replicas, TwoSeedsOfTheSmallCoupledCase) {
   EXPECT_NEAR(s["T_out_K"].get<double>(), 0.5 * (t0 + t1), 1e-9);
   EXPECT_EQ(s["replicas"]["seeds"][1].get<int>(), 12346);
   EXPECT_NE(out.find("T_out_K"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(Replicas, AFailedReplicaIsNamedAndTheSpreadIsOverTheOthers) {
+  // Three seeds; the second replica's folder is held by this (live) process's run lock, so
+  // that replica is refused: the summary is the spread of seeds 12345 and 12347, names seed
+  // 12346 with the child's reason, and the command still exits non-zero.
+  const std::string dir = centrec::testing::temp_dir("replicas_failed");
+  fs::create_directories(dir + "/run/replica_1");
+  std::ofstream(dir + "/run/replica_1/.centrec-run.lock") << "pid " << ::getpid() << "\ncommand centrec run held.yaml\n";
+  const std::string cmd = std::string(CENTREC_BINARY) + " run " + kCase + " --out " + dir +
+                          "/run --replicas 3 --threads 2 --no-plots --allow-small-drum --allow-unsteady > " + dir +
+                          "/log 2>&1";
+  const int rc = std::system(cmd.c_str());
+  std::ifstream log(dir + "/log");
+  const std::string out((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  std::printf("%s\n", out.c_str());
+  EXPECT_NE(rc, 0);
+  ASSERT_TRUE(fs::exists(dir + "/run/summary.json"));
+  std::ifstream js(dir + "/run/summary.json");
+  const auto s = nlohmann::json::parse(js);
+  std::ifstream j0(dir + "/run/replica_0/summary.json"), j2(dir + "/run/replica_2/summary.json");
+  const auto r0 = nlohmann::json::parse(j0), r2 = nlohmann::json::parse(j2);
+  const double t0 = r0["T_out_K"].get<double>(), t2 = r2["T_out_K"].get<double>();
+  EXPECT_NEAR(s["replicas"]["figures"]["/T_out_K"]["mean"].get<double>(), 0.5 * (t0 + t2), 1e-9);
+  EXPECT_EQ(s["replicas"]["seeds"].size(), 2u);
+  EXPECT_EQ(s["replicas"]["seeds"][1].get<int>(), 12347);
+  ASSERT_EQ(s["replicas"]["failed"].size(), 1u);
+  const auto& f = s["replicas"]["failed"][0];
+  std::printf("failed: %s\n", f.dump().c_str());
+  EXPECT_EQ(f["seed"].get<int>(), 12346);
+  EXPECT_NE(f["reason"].get<std::string>().find("in use by another centrec run"), std::string::npos);
+  bool warned = false;
+  for (const auto& w : s["warnings"]) warned = warned || w.get<std::string>().find("seed 12346 failed") != std::string::npos;
+  EXPECT_TRUE(warned);
+  EXPECT_NE(out.find("over 2 DEM seeds of 3"), std::string::npos);
   fs::remove_all(dir);
 }
