@@ -32,8 +32,11 @@ def record(run):
         except OSError:
             continue
         cfg = yaml.safe_load(h.attrs["resolved_config"])
-        m = h["mass_flow"]
-        return cfg, m["time"][()], m["fed"][()], m["out"][()], m["holdup"][()]
+        if "mass_flow" in h:
+            m = h["mass_flow"]
+            return cfg, m["time"][()], m["fed"][()], m["out"][()], m["holdup"][()]
+        log = h["scene/mass_flow_log"][()]  # a checkpoint: time fed out lost holdup particles axial_flow
+        return cfg, log[:, 0], log[:, 1], log[:, 2], log[:, 4]
     sys.exit(f"{run}: neither dem.h5 nor checkpoint.h5")
 
 
