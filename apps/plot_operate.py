@@ -122,7 +122,7 @@ def plot_transient(op, path, out, written):
     tr = op.get("transient", {})
     axes[0].set_title("%s at %.2f rpm; film response %.2f s%s, turndown %.2f; %s" % (
         os.path.basename(tr.get("flux_file", "")), op["operating_point"]["speed_rpm"], tr.get("film_response_s", 0),
-        "" if tr.get("film_response_measured") else " (estimate)", tr.get("turndown", 0),
+        " (%s)" % tr["film_response_source"] if "film_response_source" in tr else "", tr.get("turndown", 0),
         "the film follows the surrogate" if tr.get("film_follows_surrogate") else "the film's geometry held"),
         fontsize=9)
     pc.save(fig, out, "operate_transient.png", written)

@@ -21,9 +21,10 @@
 // before and after, summed) is reported with the result, so the forcing is measured.
 //
 // The film follows the command with a first-order lag: m' = (m_cmd - m) / tau_film, tau_film the
-// fed drum's holdup response time (a parameter here: a film whose flow grows as holdup^p,
-// p ~ 2.5 to 3, answers a feed step with tau = holdup / (p mdot), a third to a half of the
-// residence time, ~3 s at CentRec's ~10 s). Within a control interval m_cmd is constant, so the
+// fed drum's holdup response time (a parameter here: a film whose holdup H goes as mdot^a answers
+// a feed step with tau = a H / mdot; a fed drum's feed step measured a = 0.18, its standing base
+// not moving, so tau = 0.18-0.20 of the residence time with no measurable dead time,
+// docs/operating.md "The film's response time, measured"). Within a control interval m_cmd is constant, so the
 // lag is applied exactly as m = m_cmd + (m_k - m_cmd) exp(-(t - t_k) / tau_film) (a `lag`
 // TimeFactor): no O(dt / tau_film) error of a piecewise-constant m, and no jump in u every
 // interval; u stays continuous, kinked at the control instants, where the integrator restarts.

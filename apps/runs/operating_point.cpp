@@ -225,7 +225,8 @@ CloudResponse cloud_response(const SurrogateThermal& th, double speed_rpm, doubl
   out.efficiency = r.balance.efficiency;
   out.film_enthalpy = op.stored_enthalpy(y0.data());
   out.film_follows = static_cast<bool>(s.film_at);
-  if (std::isnan(s.tau_film)) s.tau_film = out.residence_time / 3.0;
+  if (std::isnan(s.tau_film)) s.tau_film = kFilmResponseOverResidence * out.residence_time;
+  out.film_response = s.tau_film;
   // The gains from the step response at the steady flux; then the cloud.
   out.tuning = thermal::tune_outlet_controller(op, y0, s);
   s.kp = out.tuning.gains.kp;

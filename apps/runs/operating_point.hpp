@@ -104,10 +104,19 @@ namespace centrec::runs {
 // state there, then the same flux series three ways: the mass flow held, the PI controller on
 // T_out alone, and the PI with the flux fed forward (thermal/outlet_controller.hpp). The
 // controller's gains are tuned once on the film's measured step response.
+// The film's response time to a feed change over its mean residence time (holdup / mass flow),
+// the default of ControlledTransientSettings::tau_film here: measured on the settled fed D/d 80
+// drum of the quickstart's film, its feed stepped down 20 %: its holdup follows a first-order lag
+// of 1.28-1.40 s with no measurable dead time, 0.18-0.20 of its 7.17 s residence
+// (docs/operating.md "The film's response time, measured"). Eqs 1-3 scale both times alike, so
+// the ratio carries to the receivers of the same scaled film.
+inline constexpr double kFilmResponseOverResidence = 0.19;
+
 struct CloudResponse {
   thermal::ControlledTransientResult fixed, pi, feedforward;
   thermal::OutletTuning tuning;
   double residence_time = 0.0;  // s, the film's holdup / mass flow at the operating point
+  double film_response = 0.0;   // s, the film's first-order lag behind the commanded flow, as used
   double efficiency = 0.0;      // steady, at the operating point (the feedforward's eta)
   double film_enthalpy = 0.0;   // J, the film's enthalpy above the inlet state at the operating point
   bool film_follows = false;    // the film followed the surrogate (film_flows given)

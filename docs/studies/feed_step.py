@@ -16,7 +16,8 @@ The holdup is the integral of the flows, so it is fitted rather than the outflow
 one-turn scatter is +-10 %. Prints theta, tau, the 63 % time theta + tau (the response time),
 the holdup the step moved (its steady change (old - new)(theta + tau)), the same against the
 mean residence time before the step, and the outflow's 63 % crossing read directly from the
-one-turn smoothed outflow as a check; draws both.
+one-turn smoothed outflow as a check; the fit again without the first half second (the
+drum's own swing at the step) as its uncertainty; draws both.
 """
 import sys
 
@@ -77,6 +78,11 @@ def main():
     print(f"  holdup {H[0] * 1e3:.1f} g at the step, {H[-1] * 1e3:.1f} g at the end")
     print(f"  first-order lag with dead time fitted to the holdup: theta {theta:.3f} s, tau {tau:.3f} s, "
           f"response (63 %) theta + tau = {theta + tau:.3f} s = {(theta + tau) / turn:.2f} turns; rms {r * 1e3:.3f} g")
+    # The same fit without the first half second (the settled drum's own outflow swing at the
+    # step, +-10 % per turn, is in it): the difference is the fit's uncertainty.
+    late = t >= 0.5
+    r2, _, theta2, tau2 = fit(t[late], H[late], dm)
+    print(f"  fitted from t = 0.5 s: theta {theta2:.3f} s, tau {tau2:.3f} s, response {theta2 + tau2:.3f} s; rms {r2 * 1e3:.3f} g")
     res_before = H[0] / old
     print(f"  mean residence before the step (holdup / feed) {res_before:.3f} s: response = {(theta + tau) / res_before:.3f} of it")
     print(f"  steady holdup change the fit implies {-dm * (theta + tau) * 1e3:.2f} g "
