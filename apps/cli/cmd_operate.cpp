@@ -98,8 +98,9 @@ int cmd_operate(const Args& args) {
   app.add_option("--transient", transient_csv, "a flux history (CSV time_s,flux_scale) to run at the answer")
       ->option_text("FLUX.csv");
   app.add_option("--film-response-s", film_response,
-                 "the film's response time to a feed change, s (default: 0.19 of its residence time, as "
-                 "measured on a fed drum's feed step, docs/operating.md)")
+                 "the film's response time to a feed change, s (default: " +
+                     config::shortest_text(runs::kFilmResponseOverResidence) +
+                     " of its residence time, as measured on a fed drum's feed step, docs/operating.md)")
       ->check(CLI::Range(0.0, 1e4));
   app.add_option("--turndown", turndown, "the lowest mass flow the feeder gives, as a fraction of the answer's")
       ->check(CLI::Range(0.01, 1.0));
@@ -371,7 +372,10 @@ int cmd_operate(const Args& args) {
                 "turndown %.2f):\n  PI tuned on the film's step response: gain %.1f K per unit flow, dead time %.2f s, "
                 "time constant %.2f s -> kp %.4g 1/K, ki %.4g 1/(K s)\n",
                 transient_csv.c_str(), st.t_end, cr.residence_time, tau,
-                std::isnan(film_response) ? " (0.19 of it, as a fed drum's feed step measured it)" : " (--film-response-s)",
+                std::isnan(film_response) ? (" (" + config::shortest_text(runs::kFilmResponseOverResidence) +
+                                                 " of it, as a fed drum's feed step measured it)")
+                                                    .c_str()
+                                              : " (--film-response-s)",
                 turndown,
                 cr.tuning.gain, cr.tuning.fit.dead_time, cr.tuning.fit.time_constant, cr.tuning.gains.kp,
                 cr.tuning.gains.ki);
@@ -429,7 +433,9 @@ int cmd_operate(const Args& args) {
     j["transient"]["residence_time_s"] = cr.residence_time;
     j["transient"]["film_response_s"] = tau;
     j["transient"]["film_response_source"] =
-        std::isnan(film_response) ? "fed drum's feed step (0.19 x the residence time)" : "--film-response-s";
+        std::isnan(film_response) ? "fed drum's feed step (" + config::shortest_text(runs::kFilmResponseOverResidence) +
+                                        " x the residence time)"
+                                  : std::string("--film-response-s");
     j["transient"]["turndown"] = turndown;
     j["transient"]["kp_per_K"] = cr.tuning.gains.kp;
     j["transient"]["ki_per_K_s"] = cr.tuning.gains.ki;

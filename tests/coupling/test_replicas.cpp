@@ -31,6 +31,18 @@ nlohmann::json fake_summary(double t_out, double eff, double k, bool steady) {
           {"dem", {{"steady", steady}, {"measured_mdot_kg_s", 0.03}}},
           {"warnings", steady ? nlohmann::json::array() : nlohmann::json::array({"not steady"})}};
 }
+
+// `centrec run --replicas n` of the small coupled case into dir/run, its output (printed) in `out`.
+int run_replicas(const std::string& dir, int n, std::string& out) {
+  const std::string cmd = std::string(CENTREC_BINARY) + " run " + kCase + " --out " + dir + "/run --replicas " +
+                          std::to_string(n) + " --threads 2 --no-plots --allow-small-drum --allow-unsteady > " + dir +
+                          "/log 2>&1";
+  const int rc = std::system(cmd.c_str());
+  std::ifstream log(dir + "/log");
+  out.assign(std::istreambuf_iterator<char>(log), std::istreambuf_iterator<char>());
+  std::printf("%s\n", out.c_str());
+  return rc;
+}
 }  // namespace
 
 TEST(Replicas, SpreadIsTheSampleStandardDeviation) {
@@ -64,13 +76,8 @@ TEST(Replicas, CombinedSummaryHoldsMeansAndSpread) {
 
 TEST(Replicas, TwoSeedsOfTheSmallCoupledCase) {
   const std::string dir = centrec::testing::temp_dir("replicas");
-  const std::string cmd = std::string(CENTREC_BINARY) + " run " + kCase + " --out " + dir +
-                          "/run --replicas 2 --threads 2 --no-plots --allow-small-drum --allow-unsteady > " + dir +
-                          "/log 2>&1";
-  const int rc = std::system(cmd.c_str());
-  std::ifstream log(dir + "/log");
-  const std::string out((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
-  std::printf("%s\n", out.c_str());
+  std::string out;
+  const int rc = run_replicas(dir, 2, out);
   ASSERT_EQ(rc, 0);
   std::ifstream js(dir + "/run/summary.json");
   const auto s = nlohmann::json::parse(js);
@@ -96,13 +103,8 @@ TEST(Replicas, AFailedReplicaIsNamedAndTheSpreadIsOverTheOthers) {
   const std::string dir = centrec::testing::temp_dir("replicas_failed");
   fs::create_directories(dir + "/run/replica_1");
   std::ofstream(dir + "/run/replica_1/.centrec-run.lock") << "pid " << ::getpid() << "\ncommand centrec run held.yaml\n";
-  const std::string cmd = std::string(CENTREC_BINARY) + " run " + kCase + " --out " + dir +
-                          "/run --replicas 3 --threads 2 --no-plots --allow-small-drum --allow-unsteady > " + dir +
-                          "/log 2>&1";
-  const int rc = std::system(cmd.c_str());
-  std::ifstream log(dir + "/log");
-  const std::string out((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
-  std::printf("%s\n", out.c_str());
+  std::string out;
+  const int rc = run_replicas(dir, 3, out);
   EXPECT_NE(rc, 0);
   ASSERT_TRUE(fs::exists(dir + "/run/summary.json"));
   std::ifstream js(dir + "/run/summary.json");
